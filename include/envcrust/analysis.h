@@ -1,0 +1,72 @@
+// The analyzer: topology, boundary knot types, linking numbers and distances to a reference,
+// as one report. This is the project's ruler (the paper judged topology by eye).
+#pragma once
+
+#include "envcrust/distance.h"
+#include "envcrust/knots.h"
+#include "envcrust/topology.h"
+#include "envcrust/types.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envcrust::analysis {
+
+/// Knot analysis of one boundary loop (index into MeshTopology::boundary_loops).
+struct LoopReport {
+  std::size_t loop = 0;
+  std::optional<knots::KnotReport> knot;  ///< unset when the loop could not be analyzed
+};
+
+/// Linking number of two boundary loops. Signed when both loops carry the induced orientation
+/// of orientable components; otherwise only |lk| is meaningful and `is_signed` is false.
+struct LinkingReport {
+  std::size_t loop_a = 0, loop_b = 0;
+  int linking_number = 0;
+  bool is_signed = false;
+};
+
+/// How well a reference boundary loop is reproduced: the mesh loop at least Hausdorff distance.
+struct BoundaryMatch {
+  std::size_t reference_loop = 0;
+  std::optional<std::size_t> mesh_loop;  ///< unset when the mesh has no boundary loop
+  double hausdorff = 0.0;
+};
+
+/// What the mesh is compared with. Either a mesh or a point set (or neither), plus optional
+/// reference boundary curves (built-in surfaces know theirs).
+struct Reference {
+  std::optional<TriangleMesh> mesh;
+  std::vector<Point3> points;       ///< used when `mesh` is unset
+  std::vector<Polyline> boundary;   ///< true boundary loops, may be empty
+  [[nodiscard]] bool has_geometry() const { return mesh.has_value() || !points.empty(); }
+};
+
+/// Options of analyze_mesh.
+struct AnalyzeOptions {
+  bool use_knots = true;              ///< compute knot types and linking numbers of loops
+  std::size_t max_knot_loops = 64;    ///< skip knot analysis beyond this many loops (warn)
+  knots::KnotOptions knot;            ///< projection seed and vote count
+  distance::DistanceOptions distance; ///< sampling of the distance measurement
+};
+
+/// The full report.
+struct AnalysisReport {
+  topology::MeshTopology topology;
+  std::vector<LoopReport> loops;       ///< one per boundary loop (same order)
+  std::vector<LinkingReport> linking;  ///< every pair of loops, a < b
+  std::optional<distance::DistanceReport> distance;
+  std::vector<BoundaryMatch> boundary_matches;  ///< one per reference boundary loop
+  std::vector<std::string> warnings;
+};
+
+/// Analyze a mesh, optionally against a reference.
+/// @throws InvalidInput on out-of-range face indices or an empty reference.
+AnalysisReport analyze_mesh(const TriangleMesh& mesh, const Reference& reference = {},
+                            const AnalyzeOptions& options = {});
+
+/// Knot analysis of a lone closed curve (the paper's Figure 10 needs only this).
+knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& options = {});
+
+}  // namespace envcrust::analysis

@@ -1,0 +1,58 @@
+// Distances between a mesh and a reference (mesh or point set), both ways, and between curves.
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace envcrust::distance {
+
+/// One-sided distance from a set of query points to a target.
+struct DirectedDistance {
+  double max = 0.0;
+  double mean = 0.0;
+  std::size_t samples = 0;
+  Point3 worst_point = Point3(0, 0, 0);  ///< query point realizing `max`
+};
+
+/// Two-sided comparison of a mesh with a reference.
+struct DistanceReport {
+  DirectedDistance mesh_to_reference;
+  DirectedDistance reference_to_mesh;
+  double hausdorff = 0.0;            ///< max of both directions
+  double reference_diagonal = 0.0;   ///< bounding-box diagonal of the reference
+  [[nodiscard]] double relative(double d) const {
+    return reference_diagonal > 0 ? d / reference_diagonal : 0.0;
+  }
+};
+
+/// Options of the comparisons.
+struct DistanceOptions {
+  std::size_t samples = 200000;  ///< area samples per mesh side, besides all vertices
+  std::uint64_t seed = 1;        ///< seed of the area sampling
+};
+
+/// Distance of each point to the nearest point of the triangles (AABB tree, parallel).
+DirectedDistance points_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh);
+
+/// Distance of each point to the nearest reference point (kd-tree, parallel).
+DirectedDistance points_to_points(const std::vector<Point3>& points,
+                                  const std::vector<Point3>& reference);
+
+/// Mesh against a reference mesh: vertices plus `samples` area samples on each side.
+/// @throws InvalidInput if either mesh has no triangle.
+DistanceReport compare_to_mesh(const TriangleMesh& mesh, const TriangleMesh& reference,
+                               const DistanceOptions& options = {});
+
+/// Mesh against a reference point set: mesh samples to the nearest reference point (this
+/// includes the reference's sampling gaps), and every reference point to the mesh.
+/// @throws InvalidInput if the mesh has no triangle or the point set is empty.
+DistanceReport compare_to_points(const TriangleMesh& mesh, const std::vector<Point3>& reference,
+                                 const DistanceOptions& options = {});
+
+/// Symmetric Hausdorff distance between two closed polylines (vertices and points along
+/// segments at 1/8 of the shorter curve's mean edge length, against segments).
+double closed_polyline_hausdorff(const Polyline& a, const Polyline& b);
+
+}  // namespace envcrust::distance

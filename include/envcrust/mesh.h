@@ -1,0 +1,28 @@
+// Small operations on indexed meshes and point lists: bounding boxes, area sampling, welding.
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace envcrust::mesh {
+
+/// Diagonal of the axis-aligned bounding box of the points (0 for fewer than 2 points).
+double bbox_diagonal(const std::vector<Point3>& points);
+
+/// Total area of the triangles.
+double total_area(const TriangleMesh& mesh);
+
+/// Fan-triangulate every polygon around its first vertex (polygons assumed convex-ish).
+TriangleMesh triangulate_polygons(const PolygonMesh& mesh);
+
+/// Merge vertices with identical coordinates (exact comparison) and drop vertices that no
+/// triangle uses. Triangle indices are remapped; triangle order is kept.
+TriangleMesh weld_identical_vertices(const TriangleMesh& mesh);
+
+/// `count` points drawn uniformly by area on the triangles, deterministic for `seed`.
+std::vector<Point3> sample_by_area(const TriangleMesh& mesh, std::size_t count,
+                                   std::uint64_t seed);
+
+}  // namespace envcrust::mesh

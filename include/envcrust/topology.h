@@ -1,0 +1,68 @@
+// Topology of an indexed triangle mesh: manifoldness, components, Euler characteristic,
+// orientability, genus and boundary loops (METHOD.md section 6).
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <optional>
+#include <vector>
+
+namespace envcrust::topology {
+
+/// One boundary loop: vertex indices (of the welded mesh) in walking order, not repeated.
+struct BoundaryLoop {
+  std::vector<Index> vertices;
+  double length = 0.0;       ///< sum of its edge lengths
+  int component = -1;        ///< connected component the loop belongs to
+  bool is_oriented = false;  ///< order follows the induced orientation of an orientable component
+  [[nodiscard]] Polyline polyline(const std::vector<Point3>& points) const;
+};
+
+/// Topology of one connected component (faces connected through shared edges).
+struct ComponentTopology {
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  long euler_characteristic = 0;  ///< V - E + F; a triangle alone has chi = 1
+  int boundary_loops = 0;
+  bool is_orientable = true;
+  bool is_manifold = true;        ///< no non-manifold edge or vertex in the component
+  /// Orientable: genus g from chi = 2 - 2g - b. Non-orientable: number of cross-caps k from
+  /// chi = 2 - k - b. Unset when the component is not a manifold.
+  std::optional<long> genus;
+};
+
+/// Topology of a whole mesh. Vertices with identical coordinates are welded first.
+struct MeshTopology {
+  std::size_t input_vertices = 0;    ///< as given
+  std::size_t vertices = 0;          ///< used by a non-degenerate face, after welding
+  std::size_t welded_vertices = 0;   ///< vertices merged into an identical one
+  std::size_t unused_vertices = 0;   ///< referenced by no face
+  std::size_t faces = 0;             ///< non-degenerate faces counted in the topology
+  std::size_t edges = 0;
+  std::size_t degenerate_faces = 0;  ///< repeated vertex or zero area (collinear corners)
+  std::size_t duplicate_faces = 0;   ///< same vertex set as an earlier face
+  std::size_t boundary_edges = 0;    ///< edges with exactly one face
+  std::size_t non_manifold_edges = 0;     ///< edges with three or more faces
+  std::size_t non_manifold_vertices = 0;  ///< vertices whose faces form several fans
+  /// Two-face edges that both faces run in the same direction: the faces are not consistently
+  /// oriented as given (possible for an orientable mesh with flipped faces).
+  std::size_t misoriented_edges = 0;
+  long euler_characteristic = 0;
+  bool is_orientable = true;              ///< every component orientable
+  std::vector<ComponentTopology> components;
+  std::vector<BoundaryLoop> boundary_loops;
+  std::vector<Point3> points;             ///< welded vertex positions (loops index these)
+
+  [[nodiscard]] bool is_manifold() const {
+    return non_manifold_edges == 0 && non_manifold_vertices == 0;
+  }
+  [[nodiscard]] bool is_closed() const { return boundary_edges == 0; }
+};
+
+/// Analyze the topology of a triangle mesh. Faces with a repeated vertex are ignored (and
+/// counted as degenerate); zero-area faces with three distinct vertices are counted as
+/// degenerate but kept, so the numbers describe the mesh as a simplicial complex.
+/// @throws InvalidInput if a face index is out of range ("face 12 has vertex index 40, but
+/// the mesh has 30 vertices").
+MeshTopology analyze_topology(const TriangleMesh& mesh);
+
+}  // namespace envcrust::topology

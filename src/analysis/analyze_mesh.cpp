@@ -1,0 +1,115 @@
+// analyze_mesh: composes topology, knot invariants of boundary loops and distances.
+#include "envcrust/analysis.h"
+#include "envcrust/errors.h"
+
+#include <algorithm>
+#include <limits>
+#include <set>
+
+namespace envcrust::analysis {
+namespace {
+
+bool loops_share_a_vertex(const topology::BoundaryLoop& a, const topology::BoundaryLoop& b) {
+  const std::set<Index> va(a.vertices.begin(), a.vertices.end());
+  return std::any_of(b.vertices.begin(), b.vertices.end(),
+                     [&](Index v) { return va.count(v) > 0; });
+}
+
+void analyze_loops(AnalysisReport& report, const AnalyzeOptions& options) {
+  const auto& topo = report.topology;
+  const auto& loops = topo.boundary_loops;
+  report.loops.resize(loops.size());
+  for (std::size_t i = 0; i < loops.size(); ++i) report.loops[i].loop = i;
+  if (!options.use_knots || loops.empty()) return;
+  if (loops.size() > options.max_knot_loops) {
+    report.warnings.push_back("knot analysis skipped: " + std::to_string(loops.size()) +
+                              " boundary loops (limit " +
+                              std::to_string(options.max_knot_loops) + ")");
+    return;
+  }
+  std::vector<Polyline> curves;
+  for (const auto& loop : loops) curves.push_back(loop.polyline(topo.points));
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    if (curves[i].size() < 3) {
+      report.warnings.push_back("boundary loop " + std::to_string(i) + " has fewer than 3 vertices");
+      continue;
+    }
+    try {
+      report.loops[i].knot = knots::identify_knot(curves[i], options.knot);
+    } catch (const Error& e) {
+      report.warnings.push_back("boundary loop " + std::to_string(i) + ": " + e.what());
+    }
+  }
+  for (std::size_t a = 0; a < loops.size(); ++a) {
+    for (std::size_t b = a + 1; b < loops.size(); ++b) {
+      if (curves[a].size() < 3 || curves[b].size() < 3) continue;
+      if (loops_share_a_vertex(loops[a], loops[b])) {
+        report.warnings.push_back("boundary loops " + std::to_string(a) + " and " +
+                                  std::to_string(b) + " touch: no linking number");
+        continue;
+      }
+      try {
+        LinkingReport link;
+        link.loop_a = a;
+        link.loop_b = b;
+        link.is_signed = loops[a].is_oriented && loops[b].is_oriented;
+        link.linking_number = knots::linking_number(curves[a], curves[b], options.knot);
+        if (!link.is_signed) link.linking_number = std::abs(link.linking_number);
+        report.linking.push_back(link);
+      } catch (const Error& e) {
+        report.warnings.push_back("linking of loops " + std::to_string(a) + " and " +
+                                  std::to_string(b) + ": " + e.what());
+      }
+    }
+  }
+}
+
+void match_boundaries(AnalysisReport& report, const std::vector<Polyline>& reference) {
+  const auto& topo = report.topology;
+  std::vector<Polyline> curves;
+  for (const auto& loop : topo.boundary_loops) curves.push_back(loop.polyline(topo.points));
+  for (std::size_t r = 0; r < reference.size(); ++r) {
+    BoundaryMatch match;
+    match.reference_loop = r;
+    match.hausdorff = std::numeric_limits<double>::infinity();
+    for (std::size_t m = 0; m < curves.size(); ++m) {
+      const double d = distance::closed_polyline_hausdorff(reference[r], curves[m]);
+      if (d < match.hausdorff) {
+        match.hausdorff = d;
+        match.mesh_loop = m;
+      }
+    }
+    report.boundary_matches.push_back(match);
+  }
+}
+
+}  // namespace
+
+AnalysisReport analyze_mesh(const TriangleMesh& mesh, const Reference& reference,
+                            const AnalyzeOptions& options) {
+  AnalysisReport report;
+  report.topology = topology::analyze_topology(mesh);
+  const auto& t = report.topology;
+  if (t.non_manifold_edges > 0)
+    report.warnings.push_back(std::to_string(t.non_manifold_edges) + " non-manifold edges");
+  if (t.non_manifold_vertices > 0)
+    report.warnings.push_back(std::to_string(t.non_manifold_vertices) + " non-manifold vertices");
+  if (t.degenerate_faces > 0)
+    report.warnings.push_back(std::to_string(t.degenerate_faces) + " degenerate faces");
+  if (t.duplicate_faces > 0)
+    report.warnings.push_back(std::to_string(t.duplicate_faces) + " duplicate faces");
+  analyze_loops(report, options);
+  if (reference.mesh) {
+    report.distance = distance::compare_to_mesh(mesh, *reference.mesh, options.distance);
+  } else if (!reference.points.empty()) {
+    report.distance = distance::compare_to_points(mesh, reference.points, options.distance);
+  }
+  if (!reference.boundary.empty()) match_boundaries(report, reference.boundary);
+  return report;
+}
+
+knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& options) {
+  return knots::identify_knot(curve, options.knot);
+}
+
+}  // namespace envcrust::analysis

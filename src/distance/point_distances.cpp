@@ -1,0 +1,75 @@
+// Point-to-mesh (AABB tree) and point-to-points (kd-tree) distances, in parallel with oneTBB.
+#include "envcrust/distance.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace envcrust::distance {
+namespace {
+
+using Triangle = Kernel::Triangle_3;
+using TrianglePrimitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, TrianglePrimitive>>;
+using SearchTraits = CGAL::Search_traits_3<Kernel>;
+using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
+
+// Reduce per-point distances into max/mean in a fixed order (thread-count independent).
+DirectedDistance summarize(const std::vector<Point3>& points, const std::vector<double>& d) {
+  DirectedDistance out;
+  out.samples = d.size();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    sum += d[i];
+    if (d[i] > out.max || i == 0) {
+      out.max = d[i];
+      out.worst_point = points[i];
+    }
+  }
+  out.mean = d.empty() ? 0.0 : sum / static_cast<double>(d.size());
+  return out;
+}
+
+}  // namespace
+
+DirectedDistance points_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    Triangle tri(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    if (!tri.is_degenerate()) triangles.push_back(tri);
+  }
+  if (triangles.empty() || points.empty()) return {};
+  TriangleTree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  std::vector<double> d(points.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        d[i] = std::sqrt(tree.squared_distance(points[i]));
+                    });
+  return summarize(points, d);
+}
+
+DirectedDistance points_to_points(const std::vector<Point3>& points,
+                                  const std::vector<Point3>& reference) {
+  if (points.empty() || reference.empty()) return {};
+  NeighborSearch::Tree tree(reference.begin(), reference.end());
+  tree.build();
+  std::vector<double> d(points.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        NeighborSearch search(tree, points[i], 1);
+                        d[i] = std::sqrt(search.begin()->second);
+                      }
+                    });
+  return summarize(points, d);
+}
+
+}  // namespace envcrust::distance

@@ -1,0 +1,40 @@
+// Bounding boxes, areas and polygon triangulation of indexed meshes.
+#include "envcrust/mesh.h"
+
+#include <CGAL/bounding_box.h>
+
+#include <cmath>
+
+namespace envcrust::mesh {
+
+double bbox_diagonal(const std::vector<Point3>& points) {
+  if (points.size() < 2) return 0.0;
+  const auto box = CGAL::bbox_3(points.begin(), points.end());
+  const double dx = box.xmax() - box.xmin();
+  const double dy = box.ymax() - box.ymin();
+  const double dz = box.zmax() - box.zmin();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+double total_area(const TriangleMesh& mesh) {
+  double area = 0.0;
+  for (const auto& t : mesh.triangles) {
+    area += std::sqrt(Kernel::Triangle_3(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                         mesh.vertices[t[2]])
+                          .squared_area());
+  }
+  return area;
+}
+
+TriangleMesh triangulate_polygons(const PolygonMesh& mesh) {
+  TriangleMesh out;
+  out.vertices = mesh.vertices;
+  for (const auto& face : mesh.faces) {
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+      out.triangles.push_back({face[0], face[i], face[i + 1]});
+    }
+  }
+  return out;
+}
+
+}  // namespace envcrust::mesh

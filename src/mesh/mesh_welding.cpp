@@ -1,0 +1,49 @@
+// Welding of vertices with identical coordinates (exact), removal of unused vertices.
+#include "envcrust/mesh.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace envcrust::mesh {
+
+TriangleMesh weld_identical_vertices(const TriangleMesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  std::vector<Index> order(n);
+  std::iota(order.begin(), order.end(), Index{0});
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+    const auto& p = mesh.vertices[a];
+    const auto& q = mesh.vertices[b];
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    if (p.z() != q.z()) return p.z() < q.z();
+    return a < b;
+  });
+  // Representative of each vertex: the smallest index with the same coordinates.
+  std::vector<Index> representative(n);
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i;
+    while (j < n && mesh.vertices[order[j]] == mesh.vertices[order[i]]) ++j;
+    for (std::size_t k = i; k < j; ++k) representative[order[k]] = order[i];
+    i = j;
+  }
+  std::vector<bool> used(n, false);
+  for (const auto& t : mesh.triangles)
+    for (Index v : t) used[representative[v]] = true;
+  constexpr Index kUnset = ~Index{0};
+  std::vector<Index> new_index(n, kUnset);
+  TriangleMesh out;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (used[v] && representative[v] == v) {
+      new_index[v] = static_cast<Index>(out.vertices.size());
+      out.vertices.push_back(mesh.vertices[v]);
+    }
+  }
+  out.triangles.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    out.triangles.push_back({new_index[representative[t[0]]], new_index[representative[t[1]]],
+                             new_index[representative[t[2]]]});
+  }
+  return out;
+}
+
+}  // namespace envcrust::mesh

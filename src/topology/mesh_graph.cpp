@@ -1,0 +1,90 @@
+// Construction of the edge table and of the vertex fans (non-manifold vertex detection).
+#include "mesh_graph.h"
+
+#include "union_find.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace envcrust::topology {
+
+int direction_along(const std::array<Index, 3>& face, Index a, Index b) {
+  for (int k = 0; k < 3; ++k) {
+    if (face[k] == a && face[(k + 1) % 3] == b) return 1;
+    if (face[k] == b && face[(k + 1) % 3] == a) return -1;
+  }
+  return 0;
+}
+
+MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t num_vertices) {
+  MeshGraph g;
+  g.num_vertices = num_vertices;
+  g.faces = std::move(faces);
+  struct HalfEdge {
+    Index a, b;
+    std::uint32_t face;
+    std::uint8_t slot;
+  };
+  std::vector<HalfEdge> half_edges;
+  half_edges.reserve(3 * g.faces.size());
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
+    for (std::uint8_t k = 0; k < 3; ++k) {
+      Index a = g.faces[f][k];
+      Index b = g.faces[f][(k + 1) % 3];
+      if (a > b) std::swap(a, b);
+      half_edges.push_back({a, b, f, k});
+    }
+  }
+  std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return std::tie(x.a, x.b, x.face, x.slot) < std::tie(y.a, y.b, y.face, y.slot);
+  });
+  g.face_edges.resize(g.faces.size());
+  g.edge_faces.reserve(half_edges.size());
+  for (std::size_t i = 0; i < half_edges.size();) {
+    std::size_t j = i;
+    const auto e = static_cast<std::uint32_t>(g.edges.size());
+    g.edges.emplace_back(half_edges[i].a, half_edges[i].b);
+    g.edge_face_begin.push_back(static_cast<std::uint32_t>(g.edge_faces.size()));
+    while (j < half_edges.size() && half_edges[j].a == half_edges[i].a &&
+           half_edges[j].b == half_edges[i].b) {
+      g.edge_faces.push_back(half_edges[j].face);
+      g.face_edges[half_edges[j].face][half_edges[j].slot] = e;
+      ++j;
+    }
+    i = j;
+  }
+  g.edge_face_begin.push_back(static_cast<std::uint32_t>(g.edge_faces.size()));
+  return g;
+}
+
+std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& g) {
+  // Corners (face, slot) are united when their faces share an edge at that corner's vertex;
+  // the fans of a vertex are then the classes among its corners.
+  UnionFind corners(3 * g.faces.size());
+  auto corner_of = [&](std::uint32_t face, Index vertex) {
+    const auto& f = g.faces[face];
+    const std::uint32_t slot = f[0] == vertex ? 0 : (f[1] == vertex ? 1 : 2);
+    return 3 * face + slot;
+  };
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    const std::uint32_t begin = g.edge_face_begin[e];
+    const std::uint32_t end = g.edge_face_begin[e + 1];
+    for (std::uint32_t i = begin + 1; i < end; ++i) {
+      for (Index v : {g.edges[e].first, g.edges[e].second}) {
+        corners.unite(corner_of(g.edge_faces[begin], v), corner_of(g.edge_faces[i], v));
+      }
+    }
+  }
+  std::vector<std::vector<std::uint32_t>> roots(g.num_vertices);
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f)
+    for (std::uint32_t k = 0; k < 3; ++k) roots[g.faces[f][k]].push_back(corners.find(3 * f + k));
+  std::vector<std::uint32_t> fans(g.num_vertices, 0);
+  for (std::size_t v = 0; v < g.num_vertices; ++v) {
+    auto& r = roots[v];
+    std::sort(r.begin(), r.end());
+    fans[v] = static_cast<std::uint32_t>(std::unique(r.begin(), r.end()) - r.begin());
+  }
+  return fans;
+}
+
+}  // namespace envcrust::topology

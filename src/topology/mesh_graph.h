@@ -1,0 +1,44 @@
+// Edge table of a triangle mesh: unique undirected edges, the faces around each, per-face edges.
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace envcrust::topology {
+
+struct MeshGraph {
+  std::size_t num_vertices = 0;
+  std::vector<std::array<Index, 3>> faces;
+  std::vector<std::pair<Index, Index>> edges;  ///< (a, b) with a < b, sorted
+  std::vector<std::uint32_t> edge_face_begin;  ///< faces of edge e: edge_faces[begin[e], begin[e+1])
+  std::vector<std::uint32_t> edge_faces;
+  std::vector<std::array<std::uint32_t, 3>> face_edges;  ///< edge k joins corners k and k+1
+
+  [[nodiscard]] std::size_t face_count_of_edge(std::size_t e) const {
+    return edge_face_begin[e + 1] - edge_face_begin[e];
+  }
+};
+
+/// +1 if the face runs the edge from a to b, -1 if from b to a, 0 if the edge is not its own.
+int direction_along(const std::array<Index, 3>& face, Index a, Index b);
+
+/// Build the edge table. Faces must have three distinct, in-range vertices.
+MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t num_vertices);
+
+/// Number of fans of faces around each vertex (faces joined through edges at that vertex).
+/// A manifold vertex has exactly one fan.
+std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& graph);
+
+/// Per face, +1 or -1 so that faces sharing a two-face edge traverse it in opposite
+/// directions; `is_orientable[c]` for each component c (components given per face).
+struct Orientation {
+  std::vector<signed char> face_sign;
+  std::vector<bool> is_orientable;
+};
+Orientation orient_components(const MeshGraph& graph, const std::vector<std::uint32_t>& component,
+                              std::size_t num_components);
+
+}  // namespace envcrust::topology

@@ -1,0 +1,23 @@
+// Disjoint-set forest with path halving and union by size.
+#pragma once
+
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace envcrust::topology {
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n), size_(n, 1) {
+    std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+  }
+  std::uint32_t find(std::uint32_t x);
+  void unite(std::uint32_t a, std::uint32_t b);
+
+ private:
+  std::vector<std::uint32_t> parent_;
+  std::vector<std::uint32_t> size_;
+};
+
+}  // namespace envcrust::topology

@@ -1,0 +1,169 @@
+// Tests of analyze_topology on generated meshes with known answers and on broken meshes.
+#include "envcrust/errors.h"
+#include "envcrust/topology.h"
+#include "fixtures/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+using namespace envcrust;
+using envcrust::topology::analyze_topology;
+
+TEST(Topology, open_cylinder_is_an_orientable_annulus) {
+  const auto t = analyze_topology(fixtures::open_cylinder(24, 6));
+  EXPECT_EQ(t.euler_characteristic, 0);
+  EXPECT_EQ(t.boundary_loops.size(), 2u);
+  EXPECT_TRUE(t.is_orientable);
+  EXPECT_TRUE(t.is_manifold());
+  ASSERT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.components[0].genus, 0);
+  EXPECT_EQ(t.misoriented_edges, 0u);
+  EXPECT_EQ(t.vertices, 24u * 7u);
+  EXPECT_EQ(t.faces, 2u * 24u * 6u);
+  for (const auto& loop : t.boundary_loops) {
+    EXPECT_EQ(loop.vertices.size(), 24u);
+    EXPECT_NEAR(loop.length, 24 * 2 * std::sin(std::numbers::pi / 24), 1e-12);
+    EXPECT_TRUE(loop.is_oriented);
+  }
+}
+
+TEST(Topology, disk_has_one_boundary_loop_and_euler_one) {
+  for (const auto& m : {fixtures::square(5), fixtures::disk_fan(9)}) {
+    const auto t = analyze_topology(m);
+    EXPECT_EQ(t.euler_characteristic, 1);
+    EXPECT_EQ(t.boundary_loops.size(), 1u);
+    EXPECT_TRUE(t.is_orientable);
+    EXPECT_EQ(t.components[0].genus, 0);
+  }
+}
+
+TEST(Topology, mobius_strip_is_not_orientable) {
+  const auto t = analyze_topology(fixtures::moebius(40, 4));
+  EXPECT_EQ(t.euler_characteristic, 0);
+  ASSERT_EQ(t.boundary_loops.size(), 1u);
+  EXPECT_FALSE(t.is_orientable);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.boundary_loops[0].vertices.size(), 80u);  // runs around twice
+  EXPECT_FALSE(t.boundary_loops[0].is_oriented);
+  EXPECT_EQ(t.components[0].genus, 1);  // one cross-cap: chi = 2 - 1 - 1
+}
+
+TEST(Topology, closed_surfaces_have_no_boundary) {
+  const auto sphere = analyze_topology(fixtures::octahedron());
+  EXPECT_EQ(sphere.euler_characteristic, 2);
+  EXPECT_TRUE(sphere.is_closed());
+  EXPECT_EQ(sphere.components[0].genus, 0);
+  const auto torus = analyze_topology(fixtures::torus());
+  EXPECT_EQ(torus.euler_characteristic, 0);
+  EXPECT_TRUE(torus.is_closed());
+  EXPECT_EQ(torus.components[0].genus, 1);
+  EXPECT_TRUE(torus.is_orientable);
+}
+
+TEST(Topology, capping_a_cylinder_closes_it) {
+  const auto t = analyze_topology(fixtures::capped_cylinder(24, 6));
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_EQ(t.boundary_loops.size(), 0u);
+  EXPECT_EQ(t.misoriented_edges, 0u);
+}
+
+TEST(Topology, punching_a_hole_adds_a_boundary_loop) {
+  auto m = fixtures::torus(24, 12);
+  m.triangles.erase(m.triangles.begin() + 100, m.triangles.begin() + 102);  // one quad
+  const auto t = analyze_topology(m);
+  EXPECT_EQ(t.euler_characteristic, -1);
+  ASSERT_EQ(t.boundary_loops.size(), 1u);
+  EXPECT_EQ(t.boundary_loops[0].vertices.size(), 4u);
+  EXPECT_EQ(t.components[0].genus, 1);
+}
+
+TEST(Topology, flipped_faces_are_misoriented_but_orientable) {
+  auto m = fixtures::open_cylinder(24, 6);
+  for (std::size_t f = 0; f < m.triangles.size() / 2; ++f) std::swap(m.triangles[f][1], m.triangles[f][2]);
+  const auto t = analyze_topology(m);
+  EXPECT_TRUE(t.is_orientable);
+  EXPECT_GT(t.misoriented_edges, 0u);
+  EXPECT_EQ(t.euler_characteristic, 0);
+}
+
+TEST(Topology, a_seam_glued_with_a_flip_makes_the_band_non_orientable) {
+  // The same strip as the cylinder, but the seam identifies v with 1 - v.
+  const auto m = fixtures::grid_mesh(24, 6, [](double u, double v) {
+    const double a = fixtures::kTwoPi * u;
+    return Point3(std::cos(a), std::sin(a), 2 * v - 1 + 0.0 * a);
+  }, fixtures::Glue::Flipped);
+  const auto t = analyze_topology(m);
+  EXPECT_FALSE(t.is_orientable);
+  EXPECT_EQ(t.boundary_loops.size(), 1u);
+}
+
+TEST(Topology, three_faces_on_an_edge_make_it_non_manifold) {
+  auto m = fixtures::square(2);
+  // A fin on the edge between vertices 0 and 1 of the square.
+  m.vertices.push_back({0.25, 0, 1});
+  m.triangles.push_back({0, 1, Index(m.vertices.size() - 1)});
+  auto fin2 = m;
+  const auto t = analyze_topology(m);
+  EXPECT_EQ(t.non_manifold_edges, 0u);  // edge 0-1 is a border edge of the square: 2 faces
+  fin2.vertices.push_back({0.25, 0, -1});
+  fin2.triangles.push_back({0, 1, Index(fin2.vertices.size() - 1)});
+  const auto t2 = analyze_topology(fin2);
+  EXPECT_EQ(t2.non_manifold_edges, 1u);
+  EXPECT_FALSE(t2.is_manifold());
+  EXPECT_FALSE(t2.components[0].genus.has_value());
+}
+
+TEST(Topology, two_disks_touching_at_a_vertex_make_it_non_manifold) {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}};
+  m.triangles = {{0, 1, 2}, {0, 3, 4}};
+  const auto t = analyze_topology(m);
+  EXPECT_EQ(t.non_manifold_vertices, 1u);
+  EXPECT_EQ(t.non_manifold_edges, 0u);
+  EXPECT_EQ(t.components.size(), 2u);
+  EXPECT_EQ(t.euler_characteristic, 1);  // 5 - 6 + 2
+}
+
+TEST(Topology, polygon_soup_is_welded_before_counting) {
+  const auto welded = analyze_topology(fixtures::as_soup(fixtures::open_cylinder(16, 4)));
+  EXPECT_EQ(welded.euler_characteristic, 0);
+  EXPECT_EQ(welded.boundary_loops.size(), 2u);
+  EXPECT_EQ(welded.welded_vertices, 3u * 2u * 16u * 4u - 16u * 5u);
+}
+
+TEST(Topology, disjoint_triangles_are_separate_components) {
+  TriangleMesh soup;
+  for (int i = 0; i < 5; ++i) {
+    const auto b = static_cast<Index>(soup.vertices.size());
+    soup.vertices.insert(soup.vertices.end(), {{double(i), 0, 0}, {i + 0.5, 0, 0}, {double(i), 1, 0}});
+    soup.triangles.push_back({b, Index(b + 1), Index(b + 2)});
+  }
+  const auto t = analyze_topology(soup);
+  EXPECT_EQ(t.components.size(), 5u);
+  EXPECT_EQ(t.boundary_loops.size(), 5u);
+  EXPECT_EQ(t.euler_characteristic, 5);
+}
+
+TEST(Topology, degenerate_and_duplicate_faces_are_counted) {
+  auto m = fixtures::square(2);
+  m.triangles.push_back({0, 0, 1});                  // repeated vertex: ignored
+  m.vertices.push_back({0.5, 0, 0});                 // on the edge 0-1: zero-area face
+  m.triangles.push_back({0, 1, Index(m.vertices.size() - 1)});
+  m.triangles.push_back(m.triangles[0]);             // duplicate
+  const auto t = analyze_topology(m);
+  EXPECT_EQ(t.degenerate_faces, 2u);
+  EXPECT_EQ(t.duplicate_faces, 1u);
+}
+
+TEST(Topology, out_of_range_index_is_reported) {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 2}, {0, 1, 7}};
+  try {
+    analyze_topology(m);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "face 1 has vertex index 7, but the mesh has 3 vertices");
+  }
+}
