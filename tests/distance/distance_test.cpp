@@ -1,0 +1,85 @@
+// Tests of the two-sided mesh distances against analytic answers.
+#include "envcrust/distance.h"
+#include "envcrust/errors.h"
+#include "fixtures/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+using namespace envcrust;
+
+namespace {
+
+TriangleMesh scaled(TriangleMesh m, double s) {
+  for (auto& p : m.vertices) p = Point3(s * p.x(), s * p.y(), s * p.z());
+  return m;
+}
+
+Polyline circle(double r, int n, double z = 0) {
+  Polyline c;
+  for (int i = 0; i < n; ++i)
+    c.emplace_back(r * std::cos(fixtures::kTwoPi * i / n), r * std::sin(fixtures::kTwoPi * i / n), z);
+  return c;
+}
+
+}  // namespace
+
+TEST(Distance, coarse_cylinder_is_within_its_chord_error_of_a_fine_one) {
+  const auto coarse = fixtures::open_cylinder(16, 4);
+  const auto fine = fixtures::open_cylinder(512, 4);
+  distance::DistanceOptions o;
+  o.samples = 20000;
+  const auto r = distance::compare_to_mesh(coarse, fine, o);
+  const double sagitta = 1 - std::cos(std::numbers::pi / 16);  // deepest point of a chord
+  // Chord midpoints are a sagitta inside the fine circle, and the fine circle's points there
+  // a sagitta outside the chords (less the fine mesh's own sagitta).
+  const double fine_sagitta = 1 - std::cos(std::numbers::pi / 512);
+  EXPECT_NEAR(r.mesh_to_reference.max, sagitta - fine_sagitta, 0.02 * sagitta);
+  EXPECT_NEAR(r.reference_to_mesh.max, sagitta, 0.02 * sagitta);
+  EXPECT_LT(r.mesh_to_reference.mean, r.mesh_to_reference.max);
+  EXPECT_NEAR(r.reference_diagonal, std::sqrt(12.0), 1e-3);
+  EXPECT_DOUBLE_EQ(r.hausdorff, std::max(r.mesh_to_reference.max, r.reference_to_mesh.max));
+}
+
+TEST(Distance, scaled_octahedron_is_offset_by_the_scale_difference_at_vertices) {
+  const auto a = fixtures::octahedron();
+  const auto b = scaled(a, 1.1);
+  const auto r = distance::compare_to_mesh(a, b);
+  // The outer octahedron's vertices lie 0.1 beyond the inner one's vertices, and that is the
+  // farthest any point of b is from a; a's face centres are 0.1/sqrt(3) inside b's faces.
+  EXPECT_NEAR(r.reference_to_mesh.max, 0.1, 1e-9);
+  EXPECT_NEAR(r.mesh_to_reference.max, 0.1 / std::sqrt(3.0), 1e-9);
+}
+
+TEST(Distance, point_reference_measures_both_ways) {
+  const auto m = fixtures::square(4);
+  std::vector<Point3> pts = {{0, 0, 0.5}, {1, 1, 0}, {0.5, 0.5, 0}};
+  distance::DistanceOptions o;
+  o.samples = 1000;
+  const auto r = distance::compare_to_points(m, pts, o);
+  EXPECT_NEAR(r.reference_to_mesh.max, 0.5, 1e-12);
+  EXPECT_EQ(r.reference_to_mesh.samples, 3u);
+  // The corners (1,0) and (0,1) are sqrt(0.5) from (0.5,0.5,0), nearer than any other sample.
+  EXPECT_NEAR(r.mesh_to_reference.max, std::sqrt(0.5), 1e-12);
+}
+
+TEST(Distance, concentric_circles_are_their_radius_difference_apart) {
+  EXPECT_NEAR(distance::closed_polyline_hausdorff(circle(1, 400), circle(1.1, 400)), 0.1, 1e-9);
+  EXPECT_NEAR(distance::closed_polyline_hausdorff(circle(1, 400), circle(1, 400, 0.3)), 0.3, 1e-9);
+}
+
+TEST(Distance, empty_inputs_are_refused) {
+  try {
+    distance::compare_to_points(fixtures::square(2), {});
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "the reference point set is empty");
+  }
+  try {
+    distance::compare_to_mesh(TriangleMesh{}, fixtures::square(2));
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "the mesh has no triangles");
+  }
+}
