@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# envcrust set-up: install missing Debian packages (idempotent), build, then
+#   run   - run the main job on a built-in example (default)
+#   test  - run the whole test suite (what .ci/run calls)
+#   build - only build
+set -euo pipefail
+mode="${1:-run}"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${ENVCRUST_BUILD_DIR:-$root/build}"
+jobs="${ENVCRUST_JOBS:-2}"
+
+packages=(cmake ninja-build g++ pkg-config libcgal-dev libeigen3-dev libtbb-dev libboost-dev
+          libgmp-dev libmpfr-dev libcli11-dev nlohmann-json3-dev libgtest-dev libpng-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing missing Debian packages: ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j "$jobs"
+
+case "$mode" in
+  build) ;;
+  run)
+    out="$root/out"
+    mkdir -p "$out"
+    "$build/envcrust" sample trefoil-ribbon -n 10000 --seed 1 -o "$out/trefoil_points.ply"
+    "$build/envcrust" sample trefoil-ribbon --mesh -o "$out/trefoil_truth.ply"
+    "$build/envcrust" analyze "$out/trefoil_truth.ply" --reference builtin:trefoil-ribbon \
+      --report "$out/trefoil_report.json"
+    ;;
+  test)
+    ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
+    ;;
+  *) echo "usage: scripts/setup.sh [run|test|build]" >&2; exit 2 ;;
+esac
