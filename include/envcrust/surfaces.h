@@ -71,8 +71,9 @@ class Surface {
 
 /// One vertex of a sampled boundary curve: position, unit tangent t (along the loop), unit
 /// normal line n, and outward conormal c (tangent to the surface, perpendicular to t,
-/// pointing away from the surface). At a corner of the domain (square), `is_corner` is set
-/// and `conormal_next` holds the conormal of the following edge.
+/// pointing away from the surface). At a corner of the domain (square), `is_corner` is set,
+/// `tangent` and `conormal` are those of the edge arriving at the corner and `conormal_next`
+/// holds the conormal of the following edge.
 struct BoundaryVertex {
   Point3 position;
   Vector3 tangent, normal, conormal;
