@@ -1,0 +1,83 @@
+// Atomic file writing: fill a temp file next to the target, then rename it onto the target.
+#include "envcrust/io.h"
+
+#include "io_detail.h"
+
+#include <cerrno>
+#include <fstream>
+#include <random>
+#include <system_error>
+
+namespace envcrust::io {
+
+namespace {
+
+std::filesystem::path temp_path_for(const std::filesystem::path& path) {
+  // A hidden name in the same folder: rename() is only atomic within one file system.
+  std::random_device random;
+  std::uniform_int_distribution<unsigned> hex_digit(0, 15);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::string suffix;
+    for (int i = 0; i < 8; ++i) {
+      suffix += "0123456789abcdef"[hex_digit(random)];
+    }
+    // Appending (rather than operator+) avoids a GCC 12 -Wrestrict false positive.
+    std::string name = ".";
+    name.append(path.filename().string()).append(".").append(suffix).append(".tmp");
+    auto candidate = path.parent_path() / name;
+    std::error_code ec;
+    if (!std::filesystem::exists(candidate, ec)) {
+      return candidate;
+    }
+  }
+  detail::fail(path, "cannot find a free temporary file name");
+}
+
+void remove_quietly(const std::filesystem::path& path) {
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+}
+
+}  // namespace
+
+void write_atomic(const std::filesystem::path& path, bool binary,
+                  const std::function<void(std::ostream&)>& fill) {
+  if (path.filename().empty()) {
+    detail::fail(path, "not a file name");
+  }
+  const std::filesystem::path temp = temp_path_for(path);
+  std::ofstream out(temp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
+  if (!out) {
+    const int error = errno;
+    detail::fail(path, "cannot create temporary file " + temp.string() + " (" +
+                           std::generic_category().message(error) + ")");
+  }
+  try {
+    fill(out);
+  } catch (...) {
+    out.close();
+    remove_quietly(temp);
+    throw;
+  }
+  out.flush();
+  const bool written = static_cast<bool>(out);
+  out.close();
+  if (!written || out.fail()) {
+    remove_quietly(temp);
+    detail::fail(path, "write failed (disk full?)");
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    remove_quietly(temp);
+    detail::fail(path, "cannot replace file (" + ec.message() + ")");
+  }
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  write_atomic(path, false, [&](std::ostream& out) {
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  });
+}
+
+}  // namespace envcrust::io

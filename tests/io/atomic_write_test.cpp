@@ -1,0 +1,90 @@
+// Tests of write_atomic and write_text: all or nothing, no temp file left behind.
+#include "envcrust/io.h"
+#include "io_test_support.h"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace envcrust::io {
+namespace {
+
+using testing::io_error_of;
+
+class AtomicWrite : public testing::TempDirTest {};
+
+std::string contents(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST_F(AtomicWrite, writes_the_target_and_leaves_no_temp_file) {
+  const auto file = path("report.json");
+  write_text(file, "{\"ok\": true}\n");
+  EXPECT_EQ(contents(file), "{\"ok\": true}\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"report.json"});
+}
+
+TEST_F(AtomicWrite, replaces_an_existing_target) {
+  const auto file = write("report.txt", "old contents that are longer\n");
+  write_text(file, "new\n");
+  EXPECT_EQ(contents(file), "new\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"report.txt"});
+}
+
+TEST_F(AtomicWrite, keeps_old_target_and_removes_temp_file_when_fill_throws) {
+  const auto file = write("mesh.off", "old\n");
+  std::filesystem::path seen_temp;
+  EXPECT_THROW(write_atomic(file, true,
+                            [&](std::ostream& out) {
+                              out << "half of a new file";
+                              out.flush();
+                              throw std::runtime_error("fill failed");
+                            }),
+               std::runtime_error);
+  EXPECT_EQ(contents(file), "old\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"mesh.off"});
+}
+
+TEST_F(AtomicWrite, writes_nothing_when_fill_throws_and_no_target_existed) {
+  const auto file = path("new.ply");
+  EXPECT_THROW(write_atomic(file, true, [](std::ostream&) { throw IoError("inner"); }), IoError);
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(AtomicWrite, temp_file_is_hidden_next_to_the_target) {
+  const auto file = path("mesh.ply");
+  std::vector<std::string> during;
+  write_atomic(file, true, [&](std::ostream& out) {
+    out << "x";
+    during = files();
+  });
+  ASSERT_EQ(during.size(), 1U);
+  EXPECT_EQ(during[0].rfind(".mesh.ply.", 0), 0U) << during[0];
+  EXPECT_EQ(during[0].substr(during[0].size() - 4), ".tmp");
+  EXPECT_EQ(files(), std::vector<std::string>{"mesh.ply"});
+}
+
+TEST_F(AtomicWrite, reports_failed_stream_and_keeps_old_target) {
+  const auto file = write("a.txt", "old\n");
+  EXPECT_EQ(io_error_of([&] {
+              write_atomic(file, false, [](std::ostream& out) { out.setstate(std::ios::badbit); });
+            }),
+            file.string() + ": write failed (disk full?)");
+  EXPECT_EQ(contents(file), "old\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"a.txt"});
+}
+
+TEST_F(AtomicWrite, reports_target_that_is_a_folder) {
+  std::filesystem::create_directory(path("out.txt"));
+  std::filesystem::create_directory(path("out.txt") / "inside");
+  const auto file = path("out.txt");
+  const std::string message = io_error_of([&] { write_text(file, "x"); });
+  EXPECT_EQ(message.rfind(file.string() + ": cannot replace file (", 0), 0U) << message;
+  EXPECT_EQ(files(), std::vector<std::string>{"out.txt"});
+}
+
+}  // namespace
+}  // namespace envcrust::io

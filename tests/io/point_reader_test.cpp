@@ -1,0 +1,105 @@
+// Tests of the plain-text point readers (.xyz/.pts/.txt) through read_points.
+#include "envcrust/io.h"
+#include "io_test_support.h"
+
+namespace envcrust::io {
+namespace {
+
+using testing::io_error_of;
+
+class PointReader : public testing::TempDirTest {};
+
+TEST_F(PointReader, reads_three_columns_with_comments_and_blank_lines) {
+  const auto file = write("a.xyz",
+                          "# header comment\n"
+                          "\n"
+                          "1 2 3\n"
+                          "  -4.5\t5e-3  +6  # trailing comment\n"
+                          "\r\n"
+                          "7 8 9\r\n");
+  const PointSet points = read_points(file);
+  ASSERT_EQ(points.size(), 3U);
+  EXPECT_FALSE(points.has_normals());
+  testing::expect_same_point(Point3(1, 2, 3), points.points[0]);
+  testing::expect_same_point(Point3(-4.5, 5e-3, 6), points.points[1]);
+  testing::expect_same_point(Point3(7, 8, 9), points.points[2]);
+}
+
+TEST_F(PointReader, reads_six_columns_as_points_and_normals) {
+  const auto file = write("a.pts", "0 0 0 0 0 1\n1 0 0 0 1 0\n");
+  const PointSet points = read_points(file);
+  ASSERT_EQ(points.size(), 2U);
+  ASSERT_TRUE(points.has_normals());
+  EXPECT_EQ(points.normals[0], Vector3(0, 0, 1));
+  EXPECT_EQ(points.normals[1], Vector3(0, 1, 0));
+}
+
+TEST_F(PointReader, accepts_txt_and_upper_case_extensions) {
+  EXPECT_EQ(read_points(write("a.txt", "1 2 3\n")).size(), 1U);
+  EXPECT_EQ(read_points(write("b.XYZ", "1 2 3")).size(), 1U);
+}
+
+TEST_F(PointReader, reads_last_line_without_newline) {
+  const PointSet points = read_points(write("a.xyz", "1 2 3\n4 5 6"));
+  ASSERT_EQ(points.size(), 2U);
+  testing::expect_same_point(Point3(4, 5, 6), points.points[1]);
+}
+
+TEST_F(PointReader, reads_doubles_exactly) {
+  const PointSet points = read_points(write("a.xyz", "0.1 1e-300 123456789.123456789\n"));
+  EXPECT_EQ(points.points[0].x(), 0.1);
+  EXPECT_EQ(points.points[0].y(), 1e-300);
+  EXPECT_EQ(points.points[0].z(), 123456789.123456789);
+}
+
+TEST_F(PointReader, reports_line_of_wrong_column_count) {
+  const auto file = write("a.xyz", "# comment\n\n1 2\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }),
+            file.string() + ":3: expected 3 or 6 numbers, got 2");
+}
+
+TEST_F(PointReader, reports_inconsistent_column_count) {
+  const auto file = write("a.xyz", "1 2 3\n4 5 6\n\n7 8 9 0 0 1\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }),
+            file.string() + ":4: expected 3 numbers (as on line 1), got 6");
+}
+
+TEST_F(PointReader, reports_text_that_is_not_a_number) {
+  const auto file = write("a.xyz", "1 2 3\n4 five 6\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }),
+            file.string() + ":2: expected a number, got 'five'");
+}
+
+TEST_F(PointReader, reports_nan_coordinate) {
+  const auto file = write("a.xyz", "1 2 3\n4 nan 6\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ":2: non-finite coordinate");
+}
+
+TEST_F(PointReader, reports_infinite_coordinate) {
+  const auto file = write("a.xyz", "1 2 3\n\n-inf 5 6\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ":3: non-finite coordinate");
+}
+
+TEST_F(PointReader, reports_out_of_range_number_as_not_a_number) {
+  const auto file = write("a.xyz", "1e999 2 3\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }),
+            file.string() + ":1: expected a number, got '1e999'");
+}
+
+TEST_F(PointReader, reports_nan_normal) {
+  const auto file = write("a.xyz", "1 2 3 0 0 nan\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ":1: non-finite normal");
+}
+
+TEST_F(PointReader, reports_empty_file_as_no_points) {
+  const auto file = write("a.xyz", "");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ": no points");
+}
+
+TEST_F(PointReader, reports_comment_only_file_as_no_points) {
+  const auto file = write("a.xyz", "# nothing\n\n   \n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ": no points");
+}
+
+}  // namespace
+}  // namespace envcrust::io
