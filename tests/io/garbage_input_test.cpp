@@ -70,5 +70,30 @@ TEST_F(GarbageInput, every_truncation_of_valid_files_is_handled) {
   }
 }
 
+TEST_F(GarbageInput, random_byte_flips_of_valid_files_are_handled) {
+  const TriangleMesh mesh{{Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0), Point3(0, 0, 1)},
+                          {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}}};
+  write_mesh(path("full.ply"), mesh);
+  write_points(path("points.ply"), PointSet{mesh.vertices, {}}, PlyEncoding::Ascii);
+  write_mesh(path("full.off"), mesh);
+  std::mt19937 random(777);
+  for (const char* name : {"full.ply", "points.ply", "full.off"}) {
+    std::ifstream in(path(name), std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string data = buffer.str();
+    const std::string extension = std::filesystem::path(name).extension().string();
+    std::uniform_int_distribution<std::size_t> position(0, data.size() - 1);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (int round = 0; round < 120; ++round) {
+      std::string mutated = data;
+      for (int flip = 0; flip < 1 + round % 4; ++flip) {
+        mutated[position(random)] = static_cast<char>(byte(random));
+      }
+      read_everything(write("flip" + extension, mutated));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace envcrust::io
