@@ -114,8 +114,8 @@ std::vector<double> arc_length_parameters(const Surface& surface, const Segment&
       coarse += std::sqrt(CGAL::squared_distance(fine[k - 2], fine[k]));
     }
     const double arc = length + std::max(0.0, length - coarse) / 3;
-    const auto count = static_cast<std::size_t>(
-        std::max(1.0, std::ceil(arc / spacing * (1 - 1e-12))));
+    const auto count =
+        static_cast<std::size_t>(std::max(1.0, std::ceil(arc / spacing * (1 - 1e-12))));
     if (count * fine_steps_per_output > steps) {
       steps = count * fine_steps_per_output;
       continue;
@@ -125,7 +125,8 @@ std::vector<double> arc_length_parameters(const Surface& surface, const Segment&
     for (std::size_t k = 0; k < count; ++k) {
       const double target = length * static_cast<double>(k) / static_cast<double>(count);
       const auto it = std::lower_bound(cumulative.begin(), cumulative.end(), target);
-      const auto hi = static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - cumulative.begin()));
+      const auto hi =
+          static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - cumulative.begin()));
       const double piece = cumulative[hi] - cumulative[hi - 1];
       const double fraction = piece > 0 ? (target - cumulative[hi - 1]) / piece : 0.0;
       params.push_back((static_cast<double>(hi - 1) + fraction) / static_cast<double>(steps));
@@ -157,8 +158,7 @@ std::vector<BoundaryCurve> boundary_curves(const Surface& surface, double max_sp
       const std::vector<double> params = arc_length_parameters(surface, segment, max_spacing);
       for (std::size_t q = 0; q < params.size(); ++q) {
         const Frame f = frame_at(surface, segment, params[q]);
-        BoundaryVertex vertex{f.position, f.tangent, f.normal, f.conormal, false,
-                              Vector3(0, 0, 0)};
+        BoundaryVertex vertex{f.position, f.tangent, f.normal, f.conormal, false, Vector3(0, 0, 0)};
         if (has_corners && q == 0 && loop.size() > 1) {
           // Tangent and conormal of the edge arriving here, so that they stay orthogonal.
           const Frame incoming = frame_at(surface, loop[(k + loop.size() - 1) % loop.size()], 1.0);

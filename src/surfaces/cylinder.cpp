@@ -20,21 +20,19 @@ class Cylinder final : public Surface {
     return "open cylinder of radius 1 around the z-axis, z in [-1,1], no caps";
   }
   [[nodiscard]] ParameterDomain domain() const override {
-    return {0, 2 * std::numbers::pi, -1, 1, Gluing::Periodic, Gluing::None, false, false};
+    return {.u0 = 0, .u1 = 2 * std::numbers::pi, .v0 = -1, .v1 = 1, .u_gluing = Gluing::Periodic};
   }
   [[nodiscard]] SurfaceJet evaluate(double u, double v) const override {
     const double c = std::cos(u), s = std::sin(u);
-    return {Point3(c, s, v), Vector3(-s, c, 0), Vector3(0, 0, 1),
-            Vector3(-c, -s, 0),  Vector3(0, 0, 0), Vector3(0, 0, 0)};
+    return {Point3(c, s, v),    Vector3(-s, c, 0), Vector3(0, 0, 1),
+            Vector3(-c, -s, 0), Vector3(0, 0, 0),  Vector3(0, 0, 0)};
   }
-  [[nodiscard]] ExpectedTopology expected_topology() const override {
-    return open_tube_topology();
-  }
+  [[nodiscard]] ExpectedTopology expected_topology() const override { return open_tube_topology(); }
 };
 
 RationalBSplineCurve unit_circle_nurbs() {
   const double h = std::numbers::sqrt2 / 2;
-  std::vector<Eigen::Vector3d> points{{1, 0, 0},  {1, 1, 0},   {0, 1, 0},  {-1, 1, 0}, {-1, 0, 0},
+  std::vector<Eigen::Vector3d> points{{1, 0, 0},   {1, 1, 0},  {0, 1, 0},  {-1, 1, 0}, {-1, 0, 0},
                                       {-1, -1, 0}, {0, -1, 0}, {1, -1, 0}, {1, 0, 0}};
   std::vector<double> weights{1, h, 1, h, 1, h, 1, h, 1};
   std::vector<double> knots{0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
@@ -51,18 +49,22 @@ class CylinderNurbs final : public Surface {
            "z in [-1,1]";
   }
   [[nodiscard]] ParameterDomain domain() const override {
-    return {circle_.first_parameter(), circle_.last_parameter(), -1, 1, Gluing::Periodic,
-            Gluing::None, false, false};
+    return {.u0 = circle_.first_parameter(),
+            .u1 = circle_.last_parameter(),
+            .v0 = -1,
+            .v1 = 1,
+            .u_gluing = Gluing::Periodic};
   }
   [[nodiscard]] SurfaceJet evaluate(double u, double v) const override {
     const CurveJet c = circle_.evaluate(u);
-    return {Point3(c.position.x(), c.position.y(), v), Vector3(c.d1.x(), c.d1.y(), 0),
-            Vector3(0, 0, 1), Vector3(c.d2.x(), c.d2.y(), 0), Vector3(0, 0, 0),
+    return {Point3(c.position.x(), c.position.y(), v),
+            Vector3(c.d1.x(), c.d1.y(), 0),
+            Vector3(0, 0, 1),
+            Vector3(c.d2.x(), c.d2.y(), 0),
+            Vector3(0, 0, 0),
             Vector3(0, 0, 0)};
   }
-  [[nodiscard]] ExpectedTopology expected_topology() const override {
-    return open_tube_topology();
-  }
+  [[nodiscard]] ExpectedTopology expected_topology() const override { return open_tube_topology(); }
 
  private:
   RationalBSplineCurve circle_;

@@ -15,7 +15,7 @@ class Square final : public Surface {
     return "flat square [-1,1]^2 in the plane z = 0 (four corners)";
   }
   [[nodiscard]] ParameterDomain domain() const override {
-    return {-1, 1, -1, 1, Gluing::None, Gluing::None, false, false};
+    return {.u0 = -1, .u1 = 1, .v0 = -1, .v1 = 1};
   }
   [[nodiscard]] SurfaceJet evaluate(double u, double v) const override {
     const Vector3 zero(0, 0, 0);
@@ -34,7 +34,12 @@ class Saddle final : public Surface {
     return "saddle z = x^2 - y^2 over the unit disk (polar parametrization)";
   }
   [[nodiscard]] ParameterDomain domain() const override {
-    return {0, 2 * std::numbers::pi, 0, 1, Gluing::Periodic, Gluing::None, true, false};
+    return {.u0 = 0,
+            .u1 = 2 * std::numbers::pi,
+            .v0 = 0,
+            .v1 = 1,
+            .u_gluing = Gluing::Periodic,
+            .v0_is_pole = true};
   }
   [[nodiscard]] SurfaceJet evaluate(double u, double v) const override {
     const double cu = std::cos(u), su = std::sin(u);

@@ -18,8 +18,11 @@ class Moebius final : public Surface {
            "v in [-0.4,0.4]";
   }
   [[nodiscard]] ParameterDomain domain() const override {
-    return {0,           2 * std::numbers::pi,    -half_width, half_width,
-            Gluing::PeriodicFlipped, Gluing::None, false,       false};
+    return {.u0 = 0,
+            .u1 = 2 * std::numbers::pi,
+            .v0 = -half_width,
+            .v1 = half_width,
+            .u_gluing = Gluing::PeriodicFlipped};
   }
   [[nodiscard]] SurfaceJet evaluate(double u, double v) const override {
     const double cu = std::cos(u), su = std::sin(u);

@@ -13,12 +13,17 @@ namespace {
 
 constexpr int max_derivative = 2;
 
+// Fixed-size scratch (no allocation per evaluation); the constructor enforces the bound.
+constexpr std::size_t max_order = RationalBSplineCurve::max_degree + 1;
+using Row = std::array<double, max_order>;
+using BasisDerivatives = std::array<std::array<double, max_derivative + 1>, max_order>;
+
 /// Basis functions N_{span-p..span, p} and their first two derivatives at t.
-std::vector<std::array<double, max_derivative + 1>> basis_derivatives(
-    int span, double t, int degree, const std::vector<double>& knots) {
+BasisDerivatives basis_derivatives(int span, double t, int degree,
+                                   const std::vector<double>& knots) {
   const auto p = static_cast<std::size_t>(degree);
-  std::vector<std::vector<double>> ndu(p + 1, std::vector<double>(p + 1, 0.0));
-  std::vector<double> left(p + 1, 0.0), right(p + 1, 0.0);
+  std::array<Row, max_order> ndu{};
+  Row left{}, right{};
   ndu[0][0] = 1.0;
   for (std::size_t j = 1; j <= p; ++j) {
     left[j] = t - knots[static_cast<std::size_t>(span) + 1 - j];
@@ -33,18 +38,14 @@ std::vector<std::array<double, max_derivative + 1>> basis_derivatives(
     ndu[j][j] = saved;
   }
 
-  std::vector<std::array<double, max_derivative + 1>> ders(p + 1);
-  for (std::size_t j = 0; j <= p; ++j) {
-    ders[j].fill(0.0);
-    ders[j][0] = ndu[j][p];
-  }
+  BasisDerivatives ders{};
+  for (std::size_t j = 0; j <= p; ++j) ders[j][0] = ndu[j][p];
   const int n = std::min(max_derivative, degree);
-  std::array<std::vector<double>, 2> a{std::vector<double>(p + 1, 0.0),
-                                       std::vector<double>(p + 1, 0.0)};
+  std::array<Row, 2> a{};
   for (int r = 0; r <= degree; ++r) {
     std::size_t s1 = 0, s2 = 1;
-    a[0].assign(p + 1, 0.0);
-    a[1].assign(p + 1, 0.0);
+    a[0].fill(0.0);
+    a[1].fill(0.0);
     a[0][0] = 1.0;
     for (int k = 1; k <= n; ++k) {
       double d = 0.0;
@@ -85,19 +86,19 @@ std::vector<std::array<double, max_derivative + 1>> basis_derivatives(
 }  // namespace
 
 RationalBSplineCurve::RationalBSplineCurve(int degree, std::vector<Eigen::Vector3d> control_points,
-                                           std::vector<double> weights,
-                                           std::vector<double> knots)
+                                           std::vector<double> weights, std::vector<double> knots)
     : degree_(degree),
       control_points_(std::move(control_points)),
       weights_(std::move(weights)),
       knots_(std::move(knots)) {
-  if (degree_ < 1 || control_points_.size() < static_cast<std::size_t>(degree_) + 1 ||
+  if (degree_ < 1 || degree_ > max_degree ||
+      control_points_.size() < static_cast<std::size_t>(degree_) + 1 ||
       weights_.size() != control_points_.size() ||
       knots_.size() != control_points_.size() + static_cast<std::size_t>(degree_) + 1) {
-    throw InvalidInput("NURBS curve: need degree >= 1, degree + 1 <= control points = weights (got " +
-                       std::to_string(control_points_.size()) + " points, " +
-                       std::to_string(weights_.size()) + " weights) and knots = points + degree + 1 (got " +
-                       std::to_string(knots_.size()) + ")");
+    throw InvalidInput(
+        "NURBS curve: need 1 <= degree <= 8, degree + 1 <= control points = weights (got " +
+        std::to_string(control_points_.size()) + " points, " + std::to_string(weights_.size()) +
+        " weights) and knots = points + degree + 1 (got " + std::to_string(knots_.size()) + ")");
   }
   if (std::any_of(weights_.begin(), weights_.end(), [](double w) { return !(w > 0); })) {
     throw InvalidInput("NURBS curve: weights must be > 0");

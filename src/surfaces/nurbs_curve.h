@@ -2,7 +2,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <vector>
 
 namespace envcrust::surfaces {
@@ -15,8 +14,10 @@ struct CurveJet {
 /// A NURBS curve of any degree: control points with weights and a clamped knot vector.
 class RationalBSplineCurve {
  public:
-  /// @throws InvalidInput when the sizes do not satisfy knots = points + degree + 1 or a
-  /// weight is not positive.
+  static constexpr int max_degree = 8;
+
+  /// @throws InvalidInput when the degree is outside [1, max_degree], the sizes do not satisfy
+  /// knots = points + degree + 1, a weight is not positive or the knots decrease.
   RationalBSplineCurve(int degree, std::vector<Eigen::Vector3d> control_points,
                        std::vector<double> weights, std::vector<double> knots);
 

@@ -1,6 +1,5 @@
 // Evaluation of the generic surface of revolution and the built-ins made from it.
 #include "revolution.h"
-
 #include "builtin.h"
 
 #include <algorithm>
@@ -10,8 +9,13 @@
 namespace envcrust::surfaces {
 
 ParameterDomain RevolutionSurface::domain() const {
-  return {0,           2 * std::numbers::pi, spec_.s0,         spec_.s1,
-          Gluing::Periodic, Gluing::None,    spec_.s0_is_pole, spec_.s1_is_pole};
+  return {.u0 = 0,
+          .u1 = 2 * std::numbers::pi,
+          .v0 = spec_.s0,
+          .v1 = spec_.s1,
+          .u_gluing = Gluing::Periodic,
+          .v0_is_pole = spec_.s0_is_pole,
+          .v1_is_pole = spec_.s1_is_pole};
 }
 
 SurfaceJet RevolutionSurface::evaluate(double u, double v) const {
@@ -52,7 +56,8 @@ RevolutionSpec sphere_spec(double theta1) {
 std::unique_ptr<Surface> make_paraboloid() {
   RevolutionSpec spec;
   spec.name = "paraboloid";
-  spec.description = "paraboloid x = y^2, y in [0,2], revolved about the x-axis (apex at the origin)";
+  spec.description =
+      "paraboloid x = y^2, y in [0,2], revolved about the x-axis (apex at the origin)";
   spec.profile = [](double s) { return ProfileJet{s, 1, 0, s * s, 2 * s, 2}; };
   spec.s0 = 0;
   spec.s1 = 2;
@@ -85,7 +90,8 @@ std::unique_ptr<Surface> make_cusp() {
   RevolutionSpec spec;
   spec.name = "cusp";
   spec.description =
-      "non-C2 cap y = |x|^(3/2), |x| <= 1, revolved about the y-axis (curvature ~ r^(-1/2) at the apex)";
+      "non-C2 cap y = |x|^(3/2), |x| <= 1, revolved about the y-axis (curvature ~ r^(-1/2) at the "
+      "apex)";
   spec.profile = [](double s) {
     // a'' = 0.75 s^(-1/2) is infinite at the apex; a tiny floor keeps the jet finite there.
     const double root = std::sqrt(std::max(s, 0.0));

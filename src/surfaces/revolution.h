@@ -1,4 +1,5 @@
-// A generic surface of revolution of a profile (radius r(s), axial height a(s)) with exact derivatives.
+// A generic surface of revolution of a profile (radius r(s), axial height a(s)) with exact
+// derivatives.
 #pragma once
 
 #include "envcrust/surfaces.h"

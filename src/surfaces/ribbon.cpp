@@ -1,6 +1,5 @@
 // Evaluation of the generic ribbon and the trefoil and unknot ribbons of the paper's section 6.2.
 #include "ribbon.h"
-
 #include "builtin.h"
 
 #include <cmath>
@@ -9,21 +8,22 @@
 namespace envcrust::surfaces {
 
 ParameterDomain RibbonSurface::domain() const {
-  return {0, 2 * std::numbers::pi, 0, spec_.width, Gluing::Periodic, Gluing::None, false, false};
+  return {.u0 = 0, .u1 = 2 * std::numbers::pi, .v0 = 0, .v1 = spec_.width, .u_gluing = Gluing::Periodic};
 }
 
 SurfaceJet RibbonSurface::evaluate(double u, double v) const {
   const SpaceCurveJet c = spec_.curve(u);
   const Vector3 zero(0, 0, 0);
-  return {CGAL::ORIGIN + (c.position + v * spec_.direction), c.d1, spec_.direction, c.d2, zero,
-          zero};
+  return {
+      CGAL::ORIGIN + (c.position + v * spec_.direction), c.d1, spec_.direction, c.d2, zero, zero};
 }
 
 std::unique_ptr<Surface> make_trefoil_ribbon() {
   RibbonSpec spec;
   spec.name = "trefoil-ribbon";
   spec.description =
-      "trefoil (sin s + 2 sin 2s, cos s - 2 cos 2s, -sin 3s) extruded 0.5 along z (two linked trefoils)";
+      "trefoil (sin s + 2 sin 2s, cos s - 2 cos 2s, -sin 3s) extruded 0.5 along z (two linked "
+      "trefoils)";
   spec.curve = [](double s) {
     const double s1 = std::sin(s), c1 = std::cos(s);
     const double s2 = std::sin(2 * s), c2 = std::cos(2 * s);

@@ -109,7 +109,8 @@ std::vector<Point3> grid_points(const Surface& surface, const ParameterDomain& d
   for (int i = 0; i <= r.nu; ++i) {
     for (int j = 0; j <= r.nv; ++j) {
       grid.push_back(
-          surface.evaluate(parameter(d.u0, d.u1, i, r.nu), parameter(d.v0, d.v1, j, r.nv)).position);
+          surface.evaluate(parameter(d.u0, d.u1, i, r.nu), parameter(d.v0, d.v1, j, r.nv))
+              .position);
     }
   }
   return grid;
@@ -185,7 +186,9 @@ TriangleMesh tessellate(const Surface& surface, const TessellationOptions& optio
   // Welding: every grid node gets the id of its canonical node. Canonical nodes come first in
   // (i, j) order, so a glued node's canonical id already exists when it is reached.
   const auto columns = static_cast<std::size_t>(r.nv + 1);
-  const auto node = [&](int i, int j) { return static_cast<std::size_t>(i) * columns + static_cast<std::size_t>(j); };
+  const auto node = [&](int i, int j) {
+    return static_cast<std::size_t>(i) * columns + static_cast<std::size_t>(j);
+  };
   constexpr Index unassigned = ~Index{0};
   std::vector<Index> ids(static_cast<std::size_t>(r.nu + 1) * columns, unassigned);
   Index pole0 = unassigned, pole1 = unassigned;

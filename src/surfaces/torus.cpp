@@ -19,7 +19,12 @@ class Torus final : public Surface {
   }
   [[nodiscard]] ParameterDomain domain() const override {
     const double two_pi = 2 * std::numbers::pi;
-    return {0, two_pi, 0, two_pi, Gluing::Periodic, Gluing::Periodic, false, false};
+    return {.u0 = 0,
+            .u1 = two_pi,
+            .v0 = 0,
+            .v1 = two_pi,
+            .u_gluing = Gluing::Periodic,
+            .v_gluing = Gluing::Periodic};
   }
   [[nodiscard]] SurfaceJet evaluate(double u, double v) const override {
     const double cu = std::cos(u), su = std::sin(u);

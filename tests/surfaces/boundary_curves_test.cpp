@@ -12,7 +12,9 @@
 namespace envcrust::surfaces {
 namespace {
 
-double distance(const Point3& a, const Point3& b) { return std::sqrt(CGAL::squared_distance(a, b)); }
+double distance(const Point3& a, const Point3& b) {
+  return std::sqrt(CGAL::squared_distance(a, b));
+}
 
 TEST(BoundaryCurves, every_builtin_has_its_expected_number_of_loops_and_orthonormal_frames) {
   for (const std::string& name : builtin_names()) {

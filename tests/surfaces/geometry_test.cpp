@@ -49,16 +49,18 @@ TEST(Jets, glued_edges_meet) {
             << name;
       }
       if (d.u_gluing == Gluing::PeriodicFlipped) {
-        EXPECT_LT(std::sqrt(CGAL::squared_distance(surface->evaluate(d.u0, d.v0 + d.v1 - v).position,
-                                                   surface->evaluate(d.u1, v).position)),
-                  1e-12)
+        EXPECT_LT(
+            std::sqrt(CGAL::squared_distance(surface->evaluate(d.u0, d.v0 + d.v1 - v).position,
+                                             surface->evaluate(d.u1, v).position)),
+            1e-12)
             << name;
       }
     }
     if (d.v0_is_pole) {
-      EXPECT_LT(std::sqrt(CGAL::squared_distance(surface->evaluate(d.u0, d.v0).position,
-                                                 surface->evaluate(0.5 * (d.u0 + d.u1), d.v0).position)),
-                1e-12)
+      EXPECT_LT(
+          std::sqrt(CGAL::squared_distance(surface->evaluate(d.u0, d.v0).position,
+                                           surface->evaluate(0.5 * (d.u0 + d.u1), d.v0).position)),
+          1e-12)
           << name;
     }
   }
@@ -70,7 +72,8 @@ TEST(Curvature, point_at_is_finite_with_unit_normal_everywhere_including_poles) 
     const ParameterDomain d = surface->domain();
     for (int i = 0; i <= 8; ++i) {
       for (int j = 0; j <= 8; ++j) {
-        const SurfacePoint p = surface->point_at(d.u0 + (d.u1 - d.u0) * i / 8, d.v0 + (d.v1 - d.v0) * j / 8);
+        const SurfacePoint p =
+            surface->point_at(d.u0 + (d.u1 - d.u0) * i / 8, d.v0 + (d.v1 - d.v0) * j / 8);
         EXPECT_TRUE(std::isfinite(p.k1) && std::isfinite(p.k2)) << name;
         EXPECT_NEAR(length(p.normal), 1.0, 1e-12) << name;
         EXPECT_GE(std::abs(p.k1), std::abs(p.k2)) << name;

@@ -10,7 +10,8 @@ namespace envcrust::surfaces::testing {
 
 /// lk(A, B) = half the sum of the signs of the crossings between A and B in one projection.
 inline int linking_number(const Polyline& a, const Polyline& b) {
-  const Vector3 view = Vector3(0.2113, 0.3761, 0.9022) / std::sqrt(0.2113 * 0.2113 + 0.3761 * 0.3761 + 0.9022 * 0.9022);
+  const Vector3 view = Vector3(0.2113, 0.3761, 0.9022) /
+                       std::sqrt(0.2113 * 0.2113 + 0.3761 * 0.3761 + 0.9022 * 0.9022);
   const Vector3 e1 = CGAL::cross_product(view, Vector3(1, 0, 0)) /
                      std::sqrt(CGAL::cross_product(view, Vector3(1, 0, 0)).squared_length());
   const Vector3 e2 = CGAL::cross_product(view, e1);

@@ -26,7 +26,9 @@ TEST(Measures, areas_match_closed_forms) {
   expect_area("paraboloid", pi / 6 * (std::pow(17.0, 1.5) - 1));
   expect_area("saddle", pi / 6 * (std::pow(5.0, 1.5) - 1));
   // 2 pi int_0^1 r sqrt(1 + 9r/4) dr, with w = 1 + 9r/4.
-  const auto antiderivative = [](double w) { return 0.4 * std::pow(w, 2.5) - 2.0 / 3 * std::pow(w, 1.5); };
+  const auto antiderivative = [](double w) {
+    return 0.4 * std::pow(w, 2.5) - 2.0 / 3 * std::pow(w, 1.5);
+  };
   expect_area("cusp", 2 * pi / (2.25 * 2.25) * (antiderivative(3.25) - antiderivative(1.0)));
 }
 

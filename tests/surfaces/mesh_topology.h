@@ -18,7 +18,7 @@ struct MeshTopology {
   std::size_t boundary_loops = 0;
   std::size_t non_manifold_edges = 0;  ///< edges with more than two triangles
   std::size_t degenerate_triangles = 0;
-  bool consistently_oriented = true;   ///< every interior edge used once in each direction
+  bool consistently_oriented = true;  ///< every interior edge used once in each direction
 };
 
 inline MeshTopology mesh_topology(const TriangleMesh& mesh) {

@@ -1,8 +1,8 @@
 // The rational B-spline evaluator and the NURBS cylinder built on it.
+#include "nurbs_curve.h"  // private header of the module, tested directly
+
 #include "envcrust/errors.h"
 #include "envcrust/surfaces.h"
-
-#include "nurbs_curve.h"  // private header of the module, tested directly
 
 #include <gtest/gtest.h>
 
@@ -14,11 +14,18 @@ namespace {
 
 RationalBSplineCurve circle() {
   const double h = std::numbers::sqrt2 / 2;
-  return RationalBSplineCurve(
-      2,
-      {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, -1, 0}, {1, -1, 0},
-       {1, 0, 0}},
-      {1, h, 1, h, 1, h, 1, h, 1}, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1});
+  return RationalBSplineCurve(2,
+                              {{1, 0, 0},
+                               {1, 1, 0},
+                               {0, 1, 0},
+                               {-1, 1, 0},
+                               {-1, 0, 0},
+                               {-1, -1, 0},
+                               {0, -1, 0},
+                               {1, -1, 0},
+                               {1, 0, 0}},
+                              {1, h, 1, h, 1, h, 1, h, 1},
+                              {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1});
 }
 
 TEST(NurbsCurve, circle_points_lie_on_the_unit_circle) {
@@ -48,8 +55,9 @@ TEST(NurbsCurve, derivatives_match_central_differences) {
   const double h = 1e-6;
   for (double t : {0.05, 0.2, 0.3, 0.6, 0.9}) {
     const CurveJet jet = c.evaluate(t);
-    EXPECT_NEAR((jet.d1 - (c.evaluate(t + h).position - c.evaluate(t - h).position) / (2 * h)).norm(),
-                0.0, 1e-6);
+    EXPECT_NEAR(
+        (jet.d1 - (c.evaluate(t + h).position - c.evaluate(t - h).position) / (2 * h)).norm(), 0.0,
+        1e-6);
     EXPECT_NEAR((jet.d2 - (c.evaluate(t + h).d1 - c.evaluate(t - h).d1) / (2 * h)).norm(), 0.0,
                 1e-5);
   }

@@ -12,8 +12,9 @@ namespace {
 
 TEST(Registry, lists_the_thirteen_builtins_in_a_stable_order) {
   const std::vector<std::string> expected{
-      "cylinder", "cylinder-nurbs", "paraboloid", "horn",   "cusp",   "trefoil-ribbon", "unknot-ribbon",
-      "moebius",  "hemisphere",     "square",     "saddle", "sphere", "torus"};
+      "cylinder",       "cylinder-nurbs", "paraboloid", "horn",       "cusp",
+      "trefoil-ribbon", "unknot-ribbon",  "moebius",    "hemisphere", "square",
+      "saddle",         "sphere",         "torus"};
   EXPECT_EQ(builtin_names(), expected);
 }
 
@@ -59,7 +60,8 @@ TEST(Ribbons, ribbon_strands_clear_each_other_by_more_than_the_width) {
     const double width = ribbon->domain().v1;
     const int n = 1500;
     std::vector<Point3> curve;
-    for (int i = 0; i < n; ++i) curve.push_back(ribbon->evaluate(2 * std::numbers::pi * i / n, 0).position);
+    for (int i = 0; i < n; ++i)
+      curve.push_back(ribbon->evaluate(2 * std::numbers::pi * i / n, 0).position);
     double smallest_gap = 1e9;
     for (int i = 0; i < n; ++i) {
       for (int j = i + 1; j < n; ++j) {
