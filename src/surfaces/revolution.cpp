@@ -35,7 +35,13 @@ SurfaceJet RevolutionSurface::evaluate(double u, double v) const {
 
 namespace {
 
-const Vector3 x_axis(1, 0, 0), y_axis(0, 1, 0), z_axis(0, 0, 1);
+/// Right-handed frame (e1, e2, axis) with the axis along x, y or z.
+void set_axis(RevolutionSpec& spec, int axis) {
+  const Vector3 unit[3] = {Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(0, 0, 1)};
+  spec.axis = unit[axis];
+  spec.e1 = unit[(axis + 1) % 3];
+  spec.e2 = unit[(axis + 2) % 3];
+}
 
 ExpectedTopology disk_topology() { return ExpectedTopology{1, 1, true, {"unknot"}, 0}; }
 
@@ -62,9 +68,7 @@ std::unique_ptr<Surface> make_paraboloid() {
   spec.s0 = 0;
   spec.s1 = 2;
   spec.s0_is_pole = true;
-  spec.axis = x_axis;
-  spec.e1 = y_axis;
-  spec.e2 = z_axis;
+  set_axis(spec, 0);
   spec.topology = disk_topology();
   return std::make_unique<RevolutionSurface>(std::move(spec));
 }
@@ -79,9 +83,7 @@ std::unique_ptr<Surface> make_horn() {
   };
   spec.s0 = 0.5;
   spec.s1 = 2;
-  spec.axis = x_axis;
-  spec.e1 = y_axis;
-  spec.e2 = z_axis;
+  set_axis(spec, 0);
   spec.topology = ExpectedTopology{0, 2, true, {"unknot", "unknot"}, 0};
   return std::make_unique<RevolutionSurface>(std::move(spec));
 }
@@ -100,9 +102,7 @@ std::unique_ptr<Surface> make_cusp() {
   spec.s0 = 0;
   spec.s1 = 1;
   spec.s0_is_pole = true;
-  spec.axis = y_axis;
-  spec.e1 = z_axis;
-  spec.e2 = x_axis;
+  set_axis(spec, 1);
   spec.topology = disk_topology();
   return std::make_unique<RevolutionSurface>(std::move(spec));
 }

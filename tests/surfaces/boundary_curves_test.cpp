@@ -86,6 +86,17 @@ TEST(BoundaryCurves, hemisphere_conormal_points_down) {
   }
 }
 
+TEST(BoundaryCurves, revolution_rims_sit_where_the_profiles_end) {
+  for (const BoundaryVertex& b : boundary_curves(*make_builtin("paraboloid"), 0.1)[0].vertices) {
+    EXPECT_NEAR(b.position.x(), 4.0, 1e-12);
+    EXPECT_NEAR(std::hypot(b.position.y(), b.position.z()), 2.0, 1e-12);
+  }
+  for (const BoundaryVertex& b : boundary_curves(*make_builtin("cusp"), 0.1)[0].vertices) {
+    EXPECT_NEAR(b.position.y(), 1.0, 1e-12);
+    EXPECT_NEAR(std::hypot(b.position.x(), b.position.z()), 1.0, 1e-12);
+  }
+}
+
 TEST(BoundaryCurves, square_has_four_flagged_corners_with_both_conormals) {
   const auto curves = boundary_curves(*make_builtin("square"), 0.25);
   ASSERT_EQ(curves.size(), 1u);
