@@ -87,11 +87,15 @@ TEST(BoundaryCurves, hemisphere_conormal_points_down) {
 }
 
 TEST(BoundaryCurves, revolution_rims_sit_where_the_profiles_end) {
-  for (const BoundaryVertex& b : boundary_curves(*make_builtin("paraboloid"), 0.1)[0].vertices) {
+  const auto paraboloid = boundary_curves(*make_builtin("paraboloid"), 0.1);
+  ASSERT_EQ(paraboloid.size(), 1u);
+  for (const BoundaryVertex& b : paraboloid[0].vertices) {
     EXPECT_NEAR(b.position.x(), 4.0, 1e-12);
     EXPECT_NEAR(std::hypot(b.position.y(), b.position.z()), 2.0, 1e-12);
   }
-  for (const BoundaryVertex& b : boundary_curves(*make_builtin("cusp"), 0.1)[0].vertices) {
+  const auto cusp = boundary_curves(*make_builtin("cusp"), 0.1);
+  ASSERT_EQ(cusp.size(), 1u);
+  for (const BoundaryVertex& b : cusp[0].vertices) {
     EXPECT_NEAR(b.position.y(), 1.0, 1e-12);
     EXPECT_NEAR(std::hypot(b.position.x(), b.position.z()), 1.0, 1e-12);
   }
