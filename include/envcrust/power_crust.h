@@ -1,0 +1,96 @@
+// The Power Crust (Amenta, Choi, Kolluri 2001) on CGAL: poles, power diagram, inner/outer
+// labels, the crust surface and the power shape (METHOD.md section 4).
+#pragma once
+
+#include "envcrust/progress.h"
+#include "envcrust/types.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envcrust::powercrust {
+
+/// Label of a pole: inside or outside the reconstructed solid.
+enum class PoleLabel : std::uint8_t { Unknown, In, Out };
+
+/// Threshold presets of the labeling (METHOD.md 4.7): the values the original program runs
+/// with (`Code`: theta 0, theta2 0) or the ones its README claims (`Readme`: 0.4 / 0.3).
+enum class LabelPreset { Code, Readme };
+
+/// Options of power_crust. Defaults reproduce the original program's behaviour.
+struct PowerCrustOptions {
+  /// Half-width of the bounding cube of the 8 extra points, in units of the largest extent
+  /// of the input's bounding box (METHOD 4.2). Range > 1.
+  double bounding_box_scale = 4.0;
+  /// Neighbour-rule threshold on w_pq (original -t). Range [-1, 1]. Set by `preset`
+  /// unless overridden.
+  std::optional<double> neighbor_threshold;
+  /// Second-pass threshold (original -w). Range [-1, 1].
+  std::optional<double> second_pass_threshold;
+  LabelPreset preset = LabelPreset::Code;
+  /// Build the crust surface (the power-diagram faces between In and Out cells).
+  bool build_crust = true;
+  /// Build the power shape (regular-triangulation simplices among In poles).
+  bool build_power_shape = true;
+};
+
+/// One pole: a Voronoi vertex of the samples (a Delaunay cell's circumcentre) chosen as p+ or
+/// p- of at least one sample, with its polar-ball radius and label.
+struct Pole {
+  Point3 center;
+  double radius = 0.0;
+  PoleLabel label = PoleLabel::Unknown;
+  bool is_hidden = false;  ///< empty power cell: not a vertex of the regular triangulation
+};
+
+/// The two poles of a sample (indices into PowerCrustResult::poles) and the cosine-based
+/// weight w = -cos angle(p+ - s, p- - s) in [0, 1].
+struct SamplePoles {
+  Index outer = 0;  ///< p+: farthest Voronoi vertex of the sample's cell
+  Index inner = 0;  ///< p-: farthest on the other side
+  double weight = 0.0;
+};
+
+/// The power shape: simplices of the regular triangulation whose vertices are all In poles
+/// (the approximate interior medial axis), deduplicated, indices into `poles`.
+struct PowerShape {
+  std::vector<std::array<Index, 2>> edges;
+  std::vector<std::array<Index, 3>> triangles;
+  std::vector<std::array<Index, 4>> tetrahedra;
+};
+
+/// Time per stage in seconds and counts, for reports.
+struct PowerCrustStats {
+  std::size_t input_points = 0;
+  std::size_t duplicate_points = 0;  ///< exact duplicates merged
+  std::size_t delaunay_cells = 0;
+  std::size_t poles = 0;
+  std::size_t inner_poles = 0, outer_poles = 0, unknown_poles = 0, hidden_poles = 0;
+  std::size_t crust_faces = 0;
+  double seconds_delaunay = 0, seconds_poles = 0, seconds_power_diagram = 0,
+         seconds_labeling = 0, seconds_crust = 0, seconds_power_shape = 0;
+};
+
+/// Everything power_crust computes.
+struct PowerCrustResult {
+  std::vector<Point3> samples;             ///< distinct input points (duplicates merged)
+  std::vector<Index> input_to_sample;      ///< for each input point, its sample
+  std::vector<SamplePoles> sample_poles;   ///< per sample
+  std::vector<Pole> poles;
+  TriangleMesh crust;                      ///< closed, outward oriented (when built)
+  PowerShape power_shape;                  ///< when built
+  PowerCrustStats stats;
+  std::vector<std::string> warnings;
+};
+
+/// Run the Power Crust on a point sample of a closed surface.
+/// @throws InvalidInput on a non-finite coordinate ("point 12 has a non-finite coordinate").
+/// @throws DegenerateInput with fewer than 5 distinct points or when all are coplanar.
+/// @throws InvalidOptions on an out-of-range option (names the field and value).
+PowerCrustResult power_crust(const std::vector<Point3>& points,
+                             const PowerCrustOptions& options = {}, const Progress& progress = {});
+
+}  // namespace envcrust::powercrust
