@@ -7,7 +7,7 @@ namespace envcrust::io::detail {
 
 namespace {
 
-/// The 0-based vertex of one `f` reference like "7", "7/2", "7//3", "-1/2/3".
+// The 0-based vertex of one `f` reference like "7", "7/2", "7//3", "-1/2/3".
 Index parse_reference(const std::filesystem::path& path, std::size_t line, std::string_view token,
                       std::size_t vertex_count) {
   const std::string_view index_text = token.substr(0, token.find('/'));

@@ -8,7 +8,7 @@ namespace envcrust::io::detail {
 
 namespace {
 
-/// Next line with data, comments removed; false at the end of the file.
+// Next line with data, comments removed; false at the end of the file.
 bool next_data_line(LineCursor& lines, std::vector<std::string_view>& tokens) {
   std::string_view line;
   while (lines.next(line)) {
@@ -34,7 +34,7 @@ struct Variant {
   std::size_t max_columns = 3;
 };
 
-/// The header keyword's variant; refuses the ones whose vertex lines we cannot read.
+// The header keyword's variant; refuses the ones whose vertex lines we cannot read.
 Variant parse_keyword(const std::filesystem::path& path, std::size_t line,
                       std::string_view keyword) {
   if (keyword == "OFF") {

@@ -16,7 +16,7 @@ namespace envcrust::io::detail {
 
 namespace {
 
-/// Where the reader is, for messages: element name, record index, record count.
+// Where the reader is, for messages: element name, record index, record count.
 struct Position {
   const char* element = "";
   std::uint64_t index = 0;
@@ -50,7 +50,7 @@ class AsciiSource {
     return value;
   }
   void skip(PlyType /*type*/) { next(); }
-  /// Whether `items` values of `type` may still follow (a cheap bound, exact for binary).
+  // Whether `items` values of `type` may still follow (a cheap bound, exact for binary).
   [[nodiscard]] bool may_hold(std::uint64_t items, PlyType /*type*/) const {
     return items <= tokens_.remaining();
   }
@@ -155,7 +155,7 @@ std::optional<std::size_t> find_property(const PlyElement& element, std::string_
   return std::nullopt;
 }
 
-/// Smallest number of bytes (binary) or tokens (ascii) one record of `element` occupies.
+// Smallest number of bytes (binary) or tokens (ascii) one record of `element` occupies.
 std::size_t min_record_size(const PlyElement& element, bool binary) {
   std::size_t size = 0;
   for (const PlyProperty& property : element.properties) {
@@ -164,7 +164,7 @@ std::size_t min_record_size(const PlyElement& element, bool binary) {
   return size;
 }
 
-/// Roles of the properties of the vertex and face elements, checked against the header.
+// Roles of the properties of the vertex and face elements, checked against the header.
 struct Layout {
   std::size_t coordinate[3] = {};
   std::optional<std::size_t> normal[3];

@@ -29,7 +29,7 @@ float read_le_float(const char* bytes) {
   return value;
 }
 
-/// Gives each distinct position one vertex index; -0.0 and 0.0 are the same position.
+// Gives each distinct position one vertex index; -0.0 and 0.0 are the same position.
 class VertexMerger {
  public:
   explicit VertexMerger(RawMesh& mesh) : mesh_(mesh) {}
@@ -174,7 +174,7 @@ class AsciiParser {
       error("expected '" + std::string(word) + "', got " + quote(token));
     }
   }
-  /// Skips the free-text solid name; leaves `token` on the first keyword after it, or empty.
+  // Skips the free-text solid name; leaves `token` on the first keyword after it, or empty.
   void skip_name(std::string_view& token) {
     const std::size_t line = tokens_.line_number();
     while (tokens_.next(token)) {

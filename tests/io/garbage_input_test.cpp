@@ -11,7 +11,7 @@ namespace {
 
 class GarbageInput : public testing::TempDirTest {};
 
-/// Read `file` with every reader; anything but success or IoError fails the test.
+// Read `file` with every reader; anything but success or IoError fails the test.
 void read_everything(const std::filesystem::path& file) {
   const auto survive = [&](const char* reader, auto&& action) {
     try {

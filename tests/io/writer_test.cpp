@@ -14,7 +14,7 @@ using testing::io_error_of;
 
 class Writer : public testing::TempDirTest {};
 
-/// Coordinates that only survive a round trip with full double precision.
+// Coordinates that only survive a round trip with full double precision.
 TriangleMesh awkward_mesh() {
   TriangleMesh mesh;
   mesh.vertices = {Point3(0.1, 0.2, 0.3),
