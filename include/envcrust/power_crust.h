@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,11 +17,15 @@ namespace envcrust::powercrust {
 /// Label of a pole: inside or outside the reconstructed solid.
 enum class PoleLabel : std::uint8_t { Unknown, In, Out };
 
+/// Marks "no pole" in index fields (a Delaunay cell that is no sample's pole).
+inline constexpr Index kNoPole = std::numeric_limits<Index>::max();
+
 /// Threshold presets of the labeling (METHOD.md 4.7): the values the original program runs
 /// with (`Code`: theta 0, theta2 0) or the ones its README claims (`Readme`: 0.4 / 0.3).
 enum class LabelPreset { Code, Readme };
 
-/// Options of power_crust. Defaults reproduce the original program's behaviour.
+/// Options of power_crust. Defaults reproduce the original program's behaviour, except that
+/// resolve_unknown is on (the original leaves Unknown poles, which can open the crust).
 struct PowerCrustOptions {
   /// Half-width of the bounding cube of the 8 extra points, in units of the largest extent
   /// of the input's bounding box (METHOD 4.2). Range > 1.
@@ -35,6 +40,12 @@ struct PowerCrustOptions {
   bool build_crust = true;
   /// Build the power shape (regular-triangulation simplices among In poles).
   bool build_power_shape = true;
+  /// Poles still Unknown after the second pass copy the label of their most deeply
+  /// intersecting labeled neighbour, so the crust stays closed (the original leaves them).
+  bool resolve_unknown = true;
+  /// Keep every finite Delaunay cell with its Voronoi vertex in PowerCrustResult (costs
+  /// memory: about 6.5 cells per sample).
+  bool keep_delaunay_cells = false;
 };
 
 /// One pole: a Voronoi vertex of the samples (a Delaunay cell's circumcentre) chosen as p+ or
@@ -54,6 +65,16 @@ struct SamplePoles {
   double weight = 0.0;
 };
 
+/// A finite cell of the Delaunay triangulation of the samples and the 8 bounding points, with
+/// its circumcentre (a Voronoi vertex). Vertex ids below samples.size() are samples; id
+/// samples.size() + k is PowerCrustResult::bounding_points[k].
+struct DelaunayCell {
+  std::array<Index, 4> vertices{};  ///< ascending
+  Point3 center;
+  double radius = 0.0;
+  Index pole = kNoPole;  ///< the pole this cell became (after welding), or kNoPole
+};
+
 /// The power shape: simplices of the regular triangulation whose vertices are all In poles
 /// (the approximate interior medial axis), deduplicated, indices into `poles`.
 struct PowerShape {
@@ -68,8 +89,15 @@ struct PowerCrustStats {
   std::size_t duplicate_points = 0;  ///< exact duplicates merged
   std::size_t delaunay_cells = 0;
   std::size_t poles = 0;
+  std::size_t welded_poles = 0;  ///< distinct cells whose circumcentre equals an earlier pole's
+  /// unknown_poles: left Unknown by the second pass (as the original would);
+  /// resolved_unknown_poles: of those, labeled by options.resolve_unknown.
   std::size_t inner_poles = 0, outer_poles = 0, unknown_poles = 0, hidden_poles = 0;
-  std::size_t crust_faces = 0;
+  std::size_t resolved_unknown_poles = 0;
+  std::size_t power_diagram_cells = 0;   ///< finite cells of the regular triangulation
+  std::size_t crust_polygons = 0;        ///< power faces between In and Out cells
+  std::size_t unbounded_crust_faces = 0; ///< In-Out faces reaching infinity (skipped)
+  std::size_t crust_faces = 0;           ///< triangles of the crust
   double seconds_delaunay = 0, seconds_poles = 0, seconds_power_diagram = 0,
          seconds_labeling = 0, seconds_crust = 0, seconds_power_shape = 0;
 };
@@ -80,7 +108,12 @@ struct PowerCrustResult {
   std::vector<Index> input_to_sample;      ///< for each input point, its sample
   std::vector<SamplePoles> sample_poles;   ///< per sample
   std::vector<Pole> poles;
+  std::array<Point3, 8> bounding_points{}; ///< corners of the bounding cube (METHOD 4.2)
+  std::vector<DelaunayCell> delaunay_cells;///< when options.keep_delaunay_cells, sorted by vertices
   TriangleMesh crust;                      ///< closed, outward oriented (when built)
+  /// Per crust triangle: the {In pole, Out pole} regular-triangulation edge whose dual power
+  /// face it triangulates (the face's outward normal points from the first to the second).
+  std::vector<std::array<Index, 2>> crust_face_poles;
   PowerShape power_shape;                  ///< when built
   PowerCrustStats stats;
   std::vector<std::string> warnings;
@@ -88,7 +121,10 @@ struct PowerCrustResult {
 
 /// Run the Power Crust on a point sample of a closed surface.
 /// @throws InvalidInput on a non-finite coordinate ("point 12 has a non-finite coordinate").
-/// @throws DegenerateInput with fewer than 5 distinct points or when all are coplanar.
+/// Deterministic: the result does not depend on the number of threads.
+/// @throws DegenerateInput with fewer than 5 distinct points or when all are coplanar or
+/// collinear ("all 100 points are coplanar: nothing to reconstruct").
+/// @throws Error "power crust cancelled" when progress.cancel is set (checked between stages).
 /// @throws InvalidOptions on an out-of-range option (names the field and value).
 PowerCrustResult power_crust(const std::vector<Point3>& points,
                              const PowerCrustOptions& options = {}, const Progress& progress = {});

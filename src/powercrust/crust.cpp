@@ -1,0 +1,211 @@
+// The crust: power faces between In and Out cells, welded, oriented, triangulated (METHOD 4.8).
+#include "robust_centres.h"
+#include "stages.h"
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+
+namespace envcrust::powercrust {
+namespace {
+
+using RtCell = Regular::Cell_handle;
+
+// Polygons found by one thread, flattened.
+struct PolygonChunk {
+  std::vector<std::array<Index, 2>> edges;  ///< {In pole, Out pole}
+  std::vector<std::size_t> starts;          ///< into corners; one past the last polygon at the end
+  std::vector<Point3> corners;
+  std::size_t unbounded = 0;
+};
+
+bool less_xyz(const Point3& a, const Point3& b) {
+  return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
+}
+
+// Weighted circumcentre from the vertices in id order, so its bits do not depend on the cell's
+// vertex order.
+Point3 power_vertex(RtCell c) {
+  std::array<RtVertex, 4> v{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+  std::sort(v.begin(), v.end(), [](RtVertex a, RtVertex b) { return a->info() < b->info(); });
+  return powercrust::power_vertex(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point());
+}
+
+// Drop cyclic repeats and start at the smallest corner (so the fan does not depend on where
+// the circulation started). Returns false when fewer than 3 distinct corners remain.
+bool normalise_polygon(std::vector<Point3>& corners) {
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  while (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();
+  if (corners.size() < 3) return false;
+  std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end(), less_xyz), corners.end());
+  return true;
+}
+
+void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& poles, Index p,
+                      PolygonChunk& chunk, std::vector<RtCell>& cells, std::vector<Point3>& corners) {
+  const Regular& rt = *diagram.rt;
+  const RtVertex v = diagram.vertex_of_pole[p];
+  cells.clear();
+  rt.incident_cells_threadsafe(v, std::back_inserter(cells));
+  // One representative cell per Out neighbour.
+  std::vector<std::pair<Index, RtCell>> edges;
+  for (RtCell c : cells)
+    for (int j = 0; j < 4; ++j) {
+      const RtVertex w = c->vertex(j);
+      if (w != v && !rt.is_infinite(w) && poles[w->info()].label == PoleLabel::Out)
+        edges.emplace_back(w->info(), c);
+    }
+  std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  edges.erase(std::unique(edges.begin(), edges.end(),
+                          [](const auto& a, const auto& b) { return a.first == b.first; }),
+              edges.end());
+  for (const auto& [q, c] : edges) {
+    const RtVertex w = diagram.vertex_of_pole[q];
+    corners.clear();
+    bool bounded = true;
+    // The circulator turns positively around the oriented edge In -> Out: a combinatorial
+    // orientation, consistent across faces even where rounding folds a tiny polygon (a
+    // geometric Newell normal is not).
+    auto circulator = rt.incident_cells(c, c->index(v), c->index(w));
+    const auto done = circulator;
+    do {
+      if (rt.is_infinite(circulator)) {
+        bounded = false;
+        break;
+      }
+      corners.push_back(power_vertex(circulator));
+    } while (++circulator != done);
+    if (!bounded) {
+      ++chunk.unbounded;
+      continue;
+    }
+    if (!normalise_polygon(corners)) continue;
+    chunk.edges.push_back({p, q});
+    chunk.starts.push_back(chunk.corners.size());
+    chunk.corners.insert(chunk.corners.end(), corners.begin(), corners.end());
+  }
+}
+
+// Count edges whose two triangles do not run them in opposite directions.
+struct EdgeCheck {
+  std::size_t boundary = 0, non_manifold = 0, misoriented = 0;
+  [[nodiscard]] bool clean() const { return boundary == 0 && non_manifold == 0 && misoriented == 0; }
+};
+
+EdgeCheck check_edges(const TriangleMesh& mesh) {
+  std::vector<std::array<Index, 3>> halfedges;  // {min, max, forward}
+  halfedges.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Index a = t[k], b = t[(k + 1) % 3];
+      halfedges.push_back({std::min(a, b), std::max(a, b), a < b ? Index{1} : Index{0}});
+    }
+  tbb::parallel_sort(halfedges.begin(), halfedges.end());
+  EdgeCheck check;
+  for (std::size_t i = 0; i < halfedges.size();) {
+    std::size_t j = i;
+    while (j < halfedges.size() && halfedges[j][0] == halfedges[i][0] && halfedges[j][1] == halfedges[i][1]) ++j;
+    if (j - i == 1) ++check.boundary;
+    else if (j - i > 2) ++check.non_manifold;
+    else if (halfedges[i][2] == halfedges[i + 1][2]) ++check.misoriented;
+    i = j;
+  }
+  return check;
+}
+
+double signed_volume(const TriangleMesh& mesh) {
+  double volume = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vector3 a = mesh.vertices[t[0]] - CGAL::ORIGIN, b = mesh.vertices[t[1]] - CGAL::ORIGIN,
+                  c = mesh.vertices[t[2]] - CGAL::ORIGIN;
+    volume += a * CGAL::cross_product(b, c) / 6.0;
+  }
+  return volume;
+}
+
+// Let CGAL orient the soup; it duplicates vertices where the crust is not a manifold.
+void orient_soup(TriangleMesh& mesh, std::vector<std::string>& warnings) {
+  std::vector<Point3> points = mesh.vertices;
+  std::vector<std::array<std::size_t, 3>> faces(mesh.triangles.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) faces[f][k] = mesh.triangles[f][k];
+  if (!CGAL::Polygon_mesh_processing::orient_polygon_soup(points, faces))
+    warnings.push_back("the crust is not an oriented manifold: orient_polygon_soup duplicated " +
+                       std::to_string(points.size() - mesh.vertices.size()) + " vertices");
+  mesh.vertices = std::move(points);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) mesh.triangles[f][k] = static_cast<Index>(faces[f][k]);
+}
+
+}  // namespace
+
+CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& poles) {
+  std::vector<Index> inner;
+  for (std::size_t p = 0; p < poles.size(); ++p)
+    if (poles[p].label == PoleLabel::In && !poles[p].is_hidden) inner.push_back(static_cast<Index>(p));
+
+  tbb::enumerable_thread_specific<PolygonChunk> chunks;
+  tbb::enumerable_thread_specific<std::pair<std::vector<RtCell>, std::vector<Point3>>> scratch;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, inner.size(), 256),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      auto& chunk = chunks.local();
+                      auto& [cells, corners] = scratch.local();
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        collect_polygons(diagram, poles, inner[i], chunk, cells, corners);
+                    });
+
+  // Gather polygons in (In, Out) order: the output does not depend on the thread schedule.
+  struct Ref { std::array<Index, 2> edge; const PolygonChunk* chunk; std::size_t index; };
+  std::vector<Ref> refs;
+  CrustStage out;
+  for (auto& chunk : chunks) {
+    chunk.starts.push_back(chunk.corners.size());
+    out.unbounded_faces += chunk.unbounded;
+    for (std::size_t i = 0; i + 1 < chunk.starts.size(); ++i) refs.push_back({chunk.edges[i], &chunk, i});
+  }
+  tbb::parallel_sort(refs.begin(), refs.end(), [](const Ref& a, const Ref& b) { return a.edge < b.edge; });
+  out.polygons = refs.size();
+
+  std::vector<Point3> vertices;
+  for (const auto& chunk : chunks) vertices.insert(vertices.end(), chunk.corners.begin(), chunk.corners.end());
+  tbb::parallel_sort(vertices.begin(), vertices.end(), less_xyz);
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  auto id_of = [&](const Point3& p) {
+    return static_cast<Index>(std::lower_bound(vertices.begin(), vertices.end(), p, less_xyz) - vertices.begin());
+  };
+  for (const Ref& ref : refs) {
+    const std::size_t begin = ref.chunk->starts[ref.index], end = ref.chunk->starts[ref.index + 1];
+    const Index first = id_of(ref.chunk->corners[begin]);
+    for (std::size_t k = begin + 1; k + 1 < end; ++k) {
+      out.mesh.triangles.push_back({first, id_of(ref.chunk->corners[k]), id_of(ref.chunk->corners[k + 1])});
+      out.face_poles.push_back(ref.edge);
+    }
+  }
+  out.mesh.vertices = std::move(vertices);
+
+  if (out.unbounded_faces > 0)
+    out.warnings.push_back(std::to_string(out.unbounded_faces) +
+                           " In-Out power faces are unbounded (an In pole on the hull of the poles) and were skipped");
+  // The circulation's sense is a fixed convention of the TDS: flip everything if it made the
+  // crust face inwards.
+  if (signed_volume(out.mesh) < 0)
+    for (auto& t : out.mesh.triangles) std::swap(t[1], t[2]);
+  const EdgeCheck check = check_edges(out.mesh);
+  if (!check.clean()) {
+    out.warnings.push_back("the crust has " + std::to_string(check.boundary) + " boundary, " +
+                           std::to_string(check.non_manifold) + " non-manifold and " +
+                           std::to_string(check.misoriented) + " misoriented edges");
+    orient_soup(out.mesh, out.warnings);
+  }
+  if (signed_volume(out.mesh) < 0)
+    out.warnings.push_back("the crust encloses a negative volume: it is oriented inwards");
+  return out;
+}
+
+}  // namespace envcrust::powercrust

@@ -1,0 +1,53 @@
+// Bounding points and the parallel Delaunay triangulation of the samples (METHOD 4.2-4.3).
+#include "delaunay.h"
+
+#include <CGAL/Spatial_lock_grid_3.h>
+
+#include <algorithm>
+#include <utility>
+
+namespace envcrust::powercrust {
+
+std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double scale) {
+  const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());
+  const double extent = std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(),
+                                  box.zmax() - box.zmin()});
+  // Centred at the box midpoint ([pc] uses half the extent, which misses data far from the
+  // origin).
+  const double cx = 0.5 * (box.xmin() + box.xmax());
+  const double cy = 0.5 * (box.ymin() + box.ymax());
+  const double cz = 0.5 * (box.zmin() + box.zmax());
+  const double h = scale * extent;
+  std::array<Point3, 8> corners;
+  for (int k = 0; k < 8; ++k)
+    corners[k] = Point3(cx + ((k & 1) ? h : -h), cy + ((k & 2) ? h : -h), cz + ((k & 4) ? h : -h));
+  return corners;
+}
+
+std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
+                                         const std::array<Point3, 8>& corners) {
+  std::vector<std::pair<Point3, Index>> input;
+  input.reserve(samples.size() + corners.size());
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    input.emplace_back(samples[i], static_cast<Index>(i));
+  for (std::size_t k = 0; k < corners.size(); ++k)
+    input.emplace_back(corners[k], static_cast<Index>(samples.size() + k));
+
+  Delaunay::Lock_data_structure lock(CGAL::bbox_3(corners.begin(), corners.end()), 50);
+  auto dt = std::make_unique<Delaunay>(Kernel(), &lock);
+  dt->insert(input.begin(), input.end());
+  dt->set_lock_data_structure(nullptr);
+  return dt;
+}
+
+std::vector<Delaunay::Cell_handle> number_finite_cells(Delaunay& dt) {
+  std::vector<Delaunay::Cell_handle> cells;
+  cells.reserve(dt.number_of_finite_cells());
+  for (auto c : dt.finite_cell_handles()) {
+    c->info() = static_cast<Index>(cells.size());
+    cells.push_back(c);
+  }
+  return cells;
+}
+
+}  // namespace envcrust::powercrust

@@ -1,0 +1,38 @@
+// The Delaunay triangulation of the samples plus 8 bounding points, parallel, with ids as info.
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace envcrust::powercrust {
+
+using DtVertexBase = CGAL::Triangulation_vertex_base_with_info_3<Index, Kernel>;
+using DtCellBase = CGAL::Triangulation_cell_base_with_info_3<
+    Index, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using DtTds = CGAL::Triangulation_data_structure_3<DtVertexBase, DtCellBase, CGAL::Parallel_tag>;
+/// Vertex info: sample id, or samples.size() + k for bounding corner k. Cell info: the cell's
+/// position in the vector returned by number_finite_cells.
+using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, DtTds>;
+
+/// The 8 corners of the cube centred at the samples' bbox midpoint with half-width
+/// `scale` times the largest extent (METHOD 4.2).
+std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double scale);
+
+/// Delaunay triangulation of samples and corners (parallel range insertion). The result
+/// holds no lock structure any more: it is meant to be read, from many threads.
+std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
+                                         const std::array<Point3, 8>& corners);
+
+/// Finite cells in iteration order; sets each cell's info to its position.
+std::vector<Delaunay::Cell_handle> number_finite_cells(Delaunay& dt);
+
+}  // namespace envcrust::powercrust

@@ -1,0 +1,116 @@
+// power_crust: the stages in order, with timings, progress and the DT freed before the RT.
+#include "stages.h"
+
+#include "envcrust/errors.h"
+
+#include <chrono>
+
+namespace envcrust::powercrust {
+namespace {
+
+class StageClock {
+ public:
+  explicit StageClock(const Progress& progress) : progress_(progress) {}
+
+  // Ends the running stage: returns its seconds, reports it done and checks cancellation.
+  double lap(std::string_view stage) {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    progress_.report(stage, 1.0);
+    if (progress_.is_cancelled()) throw Error("power crust cancelled");
+    return seconds;
+  }
+  void begin(std::string_view stage) { progress_.report(stage, 0.0); }
+
+ private:
+  const Progress& progress_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+void count_labels(const std::vector<Pole>& poles, PowerCrustStats& stats) {
+  for (const Pole& p : poles) {
+    stats.inner_poles += p.label == PoleLabel::In;
+    stats.outer_poles += p.label == PoleLabel::Out;
+    stats.hidden_poles += p.is_hidden;
+  }
+}
+
+}  // namespace
+
+PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrustOptions& options,
+                             const Progress& progress) {
+  const Thresholds thresholds = check_options(options);
+  MergedSamples merged = merge_duplicates(points);
+  check_dimension(merged.samples);
+
+  PowerCrustResult result;
+  PowerCrustStats& stats = result.stats;
+  stats.input_points = points.size();
+  stats.duplicate_points = merged.duplicates;
+  result.samples = std::move(merged.samples);
+  result.input_to_sample = std::move(merged.input_to_sample);
+  result.bounding_points = bounding_points(result.samples, options.bounding_box_scale);
+  if (merged.duplicates > 0)
+    result.warnings.push_back(std::to_string(merged.duplicates) + " duplicate points merged");
+
+  StageClock clock(progress);
+  {
+    clock.begin("delaunay");
+    std::unique_ptr<Delaunay> dt = build_delaunay(result.samples, result.bounding_points);
+    stats.seconds_delaunay = clock.lap("delaunay");
+    clock.begin("poles");
+    PoleStage poles = compute_poles(*dt, result.samples, options.keep_delaunay_cells);
+    dt.reset();  // the DT is the largest object besides the RT: never hold both (METHOD 4.11)
+    result.poles = std::move(poles.poles);
+    result.sample_poles = std::move(poles.sample_poles);
+    result.delaunay_cells = std::move(poles.cells);
+    stats.delaunay_cells = poles.finite_cells;
+    stats.welded_poles = poles.welded_poles;
+    stats.poles = result.poles.size();
+    stats.seconds_poles = clock.lap("poles");
+  }
+
+  clock.begin("power_diagram");
+  const PowerDiagram diagram = build_power_diagram(result.poles);
+  stats.power_diagram_cells = diagram.rt->number_of_finite_cells();
+  stats.seconds_power_diagram = clock.lap("power_diagram");
+
+  clock.begin("labeling");
+  {
+    const PoleGraph graph = build_pole_graph(diagram, result.poles);
+    const LabelingReport report =
+        label_poles(result.poles, result.sample_poles, graph, thresholds,
+                    CGAL::bbox_3(result.samples.begin(), result.samples.end()), options.resolve_unknown);
+    stats.unknown_poles = report.unknown_after_second_pass;
+    stats.resolved_unknown_poles = report.resolved;
+    if (report.unknown_after_second_pass > 0)
+      result.warnings.push_back(std::to_string(report.unknown_after_second_pass) +
+                                " poles left unlabeled by the second pass" +
+                                (options.resolve_unknown ? ", " + std::to_string(report.resolved) +
+                                                               " of them labeled like their deepest neighbour"
+                                                         : std::string()));
+  }
+  count_labels(result.poles, stats);
+  stats.seconds_labeling = clock.lap("labeling");
+
+  if (options.build_crust) {
+    clock.begin("crust");
+    CrustStage crust = extract_crust(diagram, result.poles);
+    result.crust = std::move(crust.mesh);
+    result.crust_face_poles = std::move(crust.face_poles);
+    stats.crust_polygons = crust.polygons;
+    stats.unbounded_crust_faces = crust.unbounded_faces;
+    stats.crust_faces = result.crust.triangles.size();
+    result.warnings.insert(result.warnings.end(), crust.warnings.begin(), crust.warnings.end());
+    stats.seconds_crust = clock.lap("crust");
+  }
+  if (options.build_power_shape) {
+    clock.begin("power_shape");
+    result.power_shape = extract_power_shape(diagram, result.poles);
+    stats.seconds_power_shape = clock.lap("power_shape");
+  }
+  return result;
+}
+
+}  // namespace envcrust::powercrust

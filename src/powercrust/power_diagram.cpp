@@ -1,0 +1,110 @@
+// The power diagram of the weighted poles (regular triangulation) and its pole graph (METHOD 4.6).
+#include "power_diagram.h"
+
+#include <CGAL/Spatial_lock_grid_3.h>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace envcrust::powercrust {
+namespace {
+
+// Poles per block of the graph build: rows are gathered per block, then copied in place.
+constexpr std::size_t kBlock = 4096;
+
+struct GraphBlock {
+  std::vector<Index> neighbours;
+  std::vector<double> weights;
+  std::vector<std::size_t> degree;
+};
+
+void gather_block(const PowerDiagram& diagram, const std::vector<Pole>& poles, std::size_t begin,
+                  std::size_t end, GraphBlock& block) {
+  const Regular& rt = *diagram.rt;
+  std::vector<Regular::Cell_handle> cells;
+  std::vector<Index> row;
+  block.degree.assign(end - begin, 0);
+  for (std::size_t p = begin; p < end; ++p) {
+    const RtVertex v = diagram.vertex_of_pole[p];
+    if (v == RtVertex()) continue;  // hidden: no power cell, no neighbours
+    cells.clear();
+    rt.incident_cells_threadsafe(v, std::back_inserter(cells));
+    row.clear();
+    for (auto c : cells)
+      for (int j = 0; j < 4; ++j) {
+        const RtVertex w = c->vertex(j);
+        if (w != v && !rt.is_infinite(w)) row.push_back(w->info());
+      }
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    block.degree[p - begin] = row.size();
+    for (Index q : row) {
+      block.neighbours.push_back(q);
+      block.weights.push_back(intersection_weight(poles[p], poles[q]));
+    }
+  }
+}
+
+}  // namespace
+
+double intersection_weight(const Pole& p, const Pole& q) {
+  const double den = 2.0 * p.radius * q.radius;
+  if (den == 0) return -1.0;
+  return (p.radius * p.radius + q.radius * q.radius - CGAL::squared_distance(p.center, q.center)) /
+         den;
+}
+
+PowerDiagram build_power_diagram(std::vector<Pole>& poles) {
+  using Weighted = Kernel::Weighted_point_3;
+  std::vector<std::pair<Weighted, Index>> input;
+  input.reserve(poles.size());
+  CGAL::Bbox_3 box;
+  for (std::size_t i = 0; i < poles.size(); ++i) {
+    input.emplace_back(Weighted(poles[i].center, poles[i].radius * poles[i].radius),
+                       static_cast<Index>(i));
+    box += poles[i].center.bbox();
+  }
+  PowerDiagram out;
+  {
+    Regular::Lock_data_structure lock(box, 50);
+    out.rt = std::make_unique<Regular>(Kernel(), &lock);
+    out.rt->insert(input.begin(), input.end());
+    out.rt->set_lock_data_structure(nullptr);
+  }
+  out.vertex_of_pole.assign(poles.size(), RtVertex());
+  for (auto v : out.rt->finite_vertex_handles()) out.vertex_of_pole[v->info()] = v;
+  for (std::size_t i = 0; i < poles.size(); ++i)
+    poles[i].is_hidden = out.vertex_of_pole[i] == RtVertex();
+  return out;
+}
+
+PoleGraph build_pole_graph(const PowerDiagram& diagram, const std::vector<Pole>& poles) {
+  const std::size_t n = poles.size();
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<GraphBlock> parts(blocks);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    gather_block(diagram, poles, b * kBlock, std::min(n, (b + 1) * kBlock), parts[b]);
+  });
+  PoleGraph g;
+  g.offsets.assign(n + 1, 0);
+  std::vector<std::size_t> block_start(blocks + 1, 0);
+  for (std::size_t b = 0; b < blocks; ++b) {
+    for (std::size_t k = 0; k < parts[b].degree.size(); ++k)
+      g.offsets[b * kBlock + k + 1] = g.offsets[b * kBlock + k] + parts[b].degree[k];
+    block_start[b + 1] = block_start[b] + parts[b].neighbours.size();
+  }
+  g.neighbours.resize(g.offsets[n]);
+  g.weights.resize(g.offsets[n]);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    std::copy(parts[b].neighbours.begin(), parts[b].neighbours.end(),
+              g.neighbours.begin() + static_cast<std::ptrdiff_t>(block_start[b]));
+    std::copy(parts[b].weights.begin(), parts[b].weights.end(),
+              g.weights.begin() + static_cast<std::ptrdiff_t>(block_start[b]));
+  });
+  return g;
+}
+
+}  // namespace envcrust::powercrust

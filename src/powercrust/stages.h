@@ -1,0 +1,80 @@
+// The stages of power_crust and the intermediate results they pass on (METHOD 4.1-4.9).
+#pragma once
+
+#include "delaunay.h"
+#include "power_diagram.h"
+
+#include "envcrust/power_crust.h"
+
+#include <CGAL/Bbox_3.h>
+
+#include <string>
+#include <vector>
+
+namespace envcrust::powercrust {
+
+/// The two labeling thresholds after applying the preset.
+struct Thresholds {
+  double neighbor = 0.0;     ///< theta (-t)
+  double second_pass = 0.0;  ///< theta2 (-w)
+};
+
+/// Validate the options and resolve the preset.
+/// @throws InvalidOptions naming the field and value.
+Thresholds check_options(const PowerCrustOptions& options);
+
+/// Distinct points in order of first occurrence, and the map from input to them.
+struct MergedSamples {
+  std::vector<Point3> samples;
+  std::vector<Index> input_to_sample;
+  std::size_t duplicates = 0;
+};
+
+/// Refuse non-finite coordinates and merge exact duplicates (METHOD 4.1).
+/// @throws InvalidInput on a non-finite coordinate.
+MergedSamples merge_duplicates(const std::vector<Point3>& points);
+
+/// Refuse fewer than 5 distinct points and collinear or coplanar sets.
+/// @throws DegenerateInput.
+void check_dimension(const std::vector<Point3>& samples);
+
+/// Poles of the samples, read from the Delaunay triangulation (METHOD 4.4-4.5).
+struct PoleStage {
+  std::vector<Pole> poles;
+  std::vector<SamplePoles> sample_poles;
+  std::vector<DelaunayCell> cells;  ///< only when asked for
+  std::size_t finite_cells = 0;
+  std::size_t welded_poles = 0;
+};
+
+/// Compute Voronoi vertices, poles (welded at equal centres, ids in sample order) and the
+/// opposite-pole weights.
+PoleStage compute_poles(Delaunay& dt, const std::vector<Point3>& samples, bool keep_cells);
+
+/// What labeling did beyond setting Pole::label.
+struct LabelingReport {
+  std::size_t unknown_after_second_pass = 0;
+  std::size_t resolved = 0;
+};
+
+/// The priority-queue labeling of [pc] label.c with its second pass (METHOD 4.7).
+LabelingReport label_poles(std::vector<Pole>& poles, const std::vector<SamplePoles>& sample_poles,
+                           const PoleGraph& graph, const Thresholds& thresholds,
+                           const CGAL::Bbox_3& sample_bbox, bool resolve_unknown);
+
+/// The crust and where each triangle came from (METHOD 4.8).
+struct CrustStage {
+  TriangleMesh mesh;
+  std::vector<std::array<Index, 2>> face_poles;
+  std::size_t polygons = 0;
+  std::size_t unbounded_faces = 0;
+  std::vector<std::string> warnings;
+};
+
+/// Power faces between In and Out cells, welded, oriented In -> Out, fan-triangulated.
+CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& poles);
+
+/// Regular-triangulation simplices among In poles, deduplicated and sorted (METHOD 4.9).
+PowerShape extract_power_shape(const PowerDiagram& diagram, const std::vector<Pole>& poles);
+
+}  // namespace envcrust::powercrust
