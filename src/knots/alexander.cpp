@@ -25,8 +25,9 @@ struct Passage {
   bool under;
 };
 
-// Polygons with at most 5 edges are unknotted: the trefoil's stick number is 6.
-constexpr std::size_t max_unknotted_vertices = 5;
+// Fewer crossings make the determinant much cheaper; projections themselves are cheap.
+constexpr int diagrams_per_projection = 4;
+
 
 }  // namespace
 
@@ -77,7 +78,7 @@ Polynomial alexander_polynomial(const Diagram& diagram) {
   for (auto& row : m) {
     row.pop_back();
   }
-  return normalize_unit(determinant(std::move(m)));
+  return normalize_unit(determinant_up_to_units(std::move(m)));
 }
 
 }  // namespace detail
@@ -110,7 +111,9 @@ KnotReport identify_knot(const Polyline& closed, const KnotOptions& options) {
   KnotReport report;
   report.simplified_vertices = loops.front().size();
   report.alexander.assign(1, '1');  // (operator=("1") trips a GCC 12 -Wrestrict false positive)
-  if (loops.front().size() <= detail::max_unknotted_vertices) {
+  // A triangle is planar, hence unknotted. (Every polygon with fewer than 6 edges is, but
+  // projecting those still catches self-intersecting input.)
+  if (loops.front().size() <= 3) {
     return report;
   }
 
@@ -123,7 +126,8 @@ KnotReport identify_knot(const Polyline& closed, const KnotOptions& options) {
   std::vector<Reading> readings;
   std::map<std::string, int> votes;
   for (int i = 0; i < options.projections; ++i) {
-    const detail::Diagram diagram = detail::generic_diagram(loops, rng);
+    const detail::Diagram diagram =
+        detail::simplest_generic_diagram(loops, rng, detail::diagrams_per_projection);
     const detail::Polynomial delta = detail::alexander_polynomial(diagram);
     const detail::BigInt at_minus_one = abs(delta.evaluate(-1));
     readings.push_back({detail::to_string(delta), at_minus_one.convert_to<std::int64_t>(),

@@ -215,4 +215,16 @@ Diagram generic_diagram(const std::vector<Polyline>& loops, std::mt19937_64& rng
                          " random directions (are the curves self-intersecting?)");
 }
 
+Diagram simplest_generic_diagram(const std::vector<Polyline>& loops, std::mt19937_64& rng,
+                                 int candidates) {
+  Diagram best = generic_diagram(loops, rng);
+  for (int k = 1; k < candidates; ++k) {
+    Diagram other = generic_diagram(loops, rng);
+    if (other.crossings.size() < best.crossings.size()) {
+      best = std::move(other);
+    }
+  }
+  return best;
+}
+
 }  // namespace envcrust::knots::detail

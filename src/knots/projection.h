@@ -37,14 +37,21 @@ struct Diagram {
   [[nodiscard]] std::size_t loop_of(std::uint32_t segment) const;
 };
 
-/// The diagram of the loops after rotating them by `rotation` (about their bounding-box
-/// centre) and projecting along z, or nothing if that projection is not generic: a vertex
-/// within 1e-9 * diag of a non-incident segment, two crossings within that distance of each
-/// other, or a crossing whose two heights differ by less than that.
+/// The diagram of the loops projected along the rotated z axis (the first two rows of
+/// `rotation` give the xy coordinates, about the loops' bounding-box centre), or nothing if the
+/// projection is not generic: a vertex within 1e-9 * diag of a non-incident segment, or two
+/// crossings within that distance of each other. Which strand is over is decided exactly from
+/// the original points (CGAL::orientation), not from rounded heights; segments that meet in
+/// space also make the projection non-generic.
 std::optional<Diagram> project_loops(const std::vector<Polyline>& loops, const Rotation& rotation);
 
 /// The first generic diagram among random rotations drawn from rng.
 /// @throws NumericalFailure if none of many rotations gives a generic projection.
 Diagram generic_diagram(const std::vector<Polyline>& loops, std::mt19937_64& rng);
+
+/// The diagram with the fewest crossings among `candidates` generic diagrams (first wins ties).
+/// @throws NumericalFailure as generic_diagram.
+Diagram simplest_generic_diagram(const std::vector<Polyline>& loops, std::mt19937_64& rng,
+                                 int candidates);
 
 }  // namespace envcrust::knots::detail

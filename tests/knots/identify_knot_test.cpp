@@ -141,6 +141,13 @@ TEST(IdentifyKnot, NonFiniteCoordinateIsRejectedWithItsIndex) {
   }
 }
 
+TEST(IdentifyKnot, SelfIntersectingCurveHasNoGenericProjection) {
+  // A planar lemniscate passes twice through the origin.
+  const Polyline curve =
+      sample([](double t) { return Point3(std::sin(t), std::sin(t) * std::cos(t), 0); }, 100);
+  EXPECT_THROW(identify_knot(curve), NumericalFailure);
+}
+
 TEST(IdentifyKnot, ZeroProjectionsAreRejected) {
   EXPECT_THROW(identify_knot(sample(test::trefoil, 30), {.seed = 1, .projections = 0}),
                InvalidOptions);

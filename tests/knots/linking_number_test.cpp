@@ -73,6 +73,12 @@ TEST(LinkingNumber, TrefoilRibbonBoundariesLinkThreeTimes) {
   }
 }
 
+TEST(LinkingNumber, TouchingLoopsHaveNoGenericProjection) {
+  // The square passes through (1, 0, 0), a vertex of the circle.
+  const Polyline b = {Point3(1, 0, 0), Point3(2, 0, 1), Point3(3, 0, 0), Point3(2, 0, -1)};
+  EXPECT_THROW(linking_number(circle_xy(100), b), NumericalFailure);
+}
+
 TEST(LinkingNumber, ShortLoopIsRejected) {
   try {
     linking_number(circle_xy(10), {Point3(0, 0, 0), Point3(1, 0, 0)});

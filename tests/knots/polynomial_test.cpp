@@ -61,5 +61,26 @@ TEST(Bareiss, SingularMatrixHasDeterminantZero) {
   EXPECT_TRUE(determinant(m).is_zero());
 }
 
+TEST(Bareiss, UnitPivotEliminationAgreesWithBareissUpToUnits) {
+  // A 5 x 5 Alexander-like matrix: 1 - t, t and -1 scattered with coinciding entries.
+  const Polynomial a = poly({1, -1});
+  const Polynomial b = poly({0, 1});
+  const Polynomial c = poly({-1});
+  const Polynomial z;
+  const PolynomialMatrix m = {{a, b, z, c, z},
+                              {z, a + c, b, z, z},
+                              {c, z, a, z, b},
+                              {b, z, c, a, z},
+                              {z, c, z, b, a + b}};
+  const Polynomial exact = determinant(m);
+  ASSERT_FALSE(exact.is_zero());
+  EXPECT_EQ(normalize_unit(determinant_up_to_units(m)), normalize_unit(exact));
+}
+
+TEST(Bareiss, UnitPivotEliminationOfASingularMatrixGivesZero) {
+  const PolynomialMatrix m = {{poly({0, 1}), poly({2})}, {poly({0, 1}), poly({2})}};
+  EXPECT_TRUE(determinant_up_to_units(m).is_zero());
+}
+
 }  // namespace
 }  // namespace envcrust::knots::detail
