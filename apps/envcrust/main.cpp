@@ -1,11 +1,43 @@
-// Entry point of the envcrust command-line tool: registers subcommands, maps errors to exit codes.
+// Entry point of the envcrust command-line tool: registers subcommands and maps errors to
+// exit codes (1 bad input or options, 2 usage, 3 internal error).
+#include "cli_common.h"
+#include "commands.h"
+
+#include "envcrust/errors.h"
+
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <iostream>
 
 int main(int argc, char** argv) {
-  CLI::App app{"envcrust: reconstruction of surfaces with boundary"};
+  CLI::App app{
+      "envcrust: reconstruction of surfaces with boundary through their rho-envelope.\n"
+      "Run 'envcrust SUBCOMMAND --help' for the options of a subcommand."};
   app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
+  app.set_version_flag("--version", "envcrust 0.1.0");
+  envcrust::cli::register_sample(app);
+  envcrust::cli::register_analyze(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "envcrust: usage error: " << e.what() << "\n";
+    return 2;
+  } catch (const envcrust::cli::UsageError& e) {
+    std::cerr << "envcrust: usage error: " << e.what() << "\n";
+    return 2;
+  } catch (const envcrust::Error& e) {
+    std::cerr << "envcrust: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "envcrust: internal error: " << e.what() << "\n";
+    return 3;
+  }
   return 0;
 }

@@ -1,0 +1,90 @@
+// `envcrust analyze`: topology, boundary knots, linking and distances of a mesh; or the knot
+// type of a lone curve (--curve).
+#include "analysis_output.h"
+#include "cli_common.h"
+#include "commands.h"
+#include "inputs.h"
+
+#include "envcrust/io.h"
+
+#include <iostream>
+#include <memory>
+
+namespace envcrust::cli {
+namespace {
+
+struct AnalyzeCommand {
+  std::string mesh;
+  std::string reference;
+  std::string curve;
+  std::string report_file;
+  bool no_knots = false;
+  analysis::AnalyzeOptions options;
+  CommonFlags common;
+};
+
+void run_curve(const AnalyzeCommand& cmd) {
+  const Polyline curve = io::read_polyline(cmd.curve);
+  const auto knot = analysis::analyze_curve(curve, cmd.options);
+  nlohmann::json j = {{"curve", cmd.curve}, {"vertices", curve.size()}, {"knot", knot_json(knot)}};
+  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
+  if (cmd.common.json) {
+    print_json(j);
+  } else if (!cmd.common.quiet) {
+    std::cout << cmd.curve << ": " << curve.size() << " vertices, " << knots::to_string(knot.type)
+              << " (Alexander polynomial " << knot.alexander << ", determinant " << knot.determinant
+              << ", " << knot.crossings << " crossings after simplification to "
+              << knot.simplified_vertices << " vertices"
+              << (knot.projections_agree ? "" : "; projections disagreed") << ")\n";
+  }
+}
+
+void run_analyze(AnalyzeCommand& cmd) {
+  if (!cmd.curve.empty()) {
+    if (!cmd.mesh.empty()) throw UsageError("analyze: give either MESH or --curve, not both");
+    run_curve(cmd);
+    return;
+  }
+  if (cmd.mesh.empty()) throw UsageError("analyze: a MESH (or --curve CURVE) is required");
+  cmd.options.use_knots = !cmd.no_knots;
+  const TriangleMesh mesh = load_mesh(cmd.mesh);
+  analysis::Reference reference;
+  if (!cmd.reference.empty()) reference = load_reference(cmd.reference);
+  const auto report = analysis::analyze_mesh(mesh, reference, cmd.options);
+  nlohmann::json j = analysis_json(report);
+  j["mesh"] = cmd.mesh;
+  if (!cmd.reference.empty()) j["reference"] = cmd.reference;
+  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
+  if (cmd.common.json) {
+    print_json(j);
+  } else if (!cmd.common.quiet) {
+    print_analysis(std::cout, cmd.mesh, report);
+  }
+}
+
+}  // namespace
+
+void register_analyze(CLI::App& app) {
+  auto cmd = std::make_shared<AnalyzeCommand>();
+  CLI::App* sub = app.add_subcommand(
+      "analyze",
+      "Report a mesh's topology (manifoldness, Euler characteristic, orientability, genus,\n"
+      "boundary loops with knot types, linking numbers) and, with --reference, its distances");
+  sub->add_option("mesh", cmd->mesh, "Mesh file (.ply/.off/.obj/.stl) or builtin:NAME");
+  sub->add_option("-r,--reference", cmd->reference,
+                  "Reference: mesh file, point file, or builtin:NAME (exact surface and boundary)");
+  sub->add_option("--curve", cmd->curve,
+                  "Analyze the knot type of one closed polyline (.polyline/.xyz) instead of a mesh");
+  sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
+  sub->add_option("--samples", cmd->options.distance.samples,
+                  "Area samples per side for distance measurement")->capture_default_str();
+  sub->add_option("--seed", cmd->options.distance.seed, "Seed of the distance sampling")->capture_default_str();
+  sub->add_option("--knot-seed", cmd->options.knot.seed, "Seed of the knot projections")->capture_default_str();
+  sub->add_option("--projections", cmd->options.knot.projections,
+                  "Projections voted over for knot types")->capture_default_str()->check(CLI::PositiveNumber);
+  sub->add_flag("--no-knots", cmd->no_knots, "Skip knot types and linking numbers of boundary loops");
+  add_common_flags(*sub, cmd->common);
+  sub->callback([cmd] { run_analyze(*cmd); });
+}
+
+}  // namespace envcrust::cli

@@ -1,0 +1,11 @@
+// Registration of every subcommand with the CLI11 app (one cmd_<name>.cpp each).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace envcrust::cli {
+
+void register_sample(CLI::App& app);
+void register_analyze(CLI::App& app);
+
+}  // namespace envcrust::cli

@@ -1,0 +1,54 @@
+// Input resolution: built-in surfaces versus files, meshes versus point sets.
+#include "inputs.h"
+
+#include "envcrust/errors.h"
+#include "envcrust/io.h"
+#include "envcrust/mesh.h"
+#include "envcrust/surfaces.h"
+
+namespace envcrust::cli {
+namespace {
+
+constexpr std::string_view kBuiltinPrefix = "builtin:";
+
+std::unique_ptr<surfaces::Surface> builtin_of(const std::string& spec) {
+  return surfaces::make_builtin(spec.substr(kBuiltinPrefix.size()));
+}
+
+}  // namespace
+
+bool is_builtin_spec(const std::string& spec) { return spec.rfind(kBuiltinPrefix, 0) == 0; }
+
+TriangleMesh load_mesh(const std::string& spec) {
+  if (is_builtin_spec(spec)) return surfaces::tessellate(*builtin_of(spec));
+  return io::read_triangle_mesh(spec);
+}
+
+analysis::Reference load_reference(const std::string& spec) {
+  analysis::Reference reference;
+  if (is_builtin_spec(spec)) {
+    const auto surface = builtin_of(spec);
+    reference.mesh = surfaces::tessellate(*surface);
+    const double spacing = 2e-3 * surfaces::bbox_diagonal(*surface);
+    for (const auto& curve : surfaces::boundary_curves(*surface, spacing))
+      reference.boundary.push_back(curve.polyline());
+    return reference;
+  }
+  const std::string ext = io::extension_of(spec);
+  if (ext == "off" || ext == "obj" || ext == "stl") {
+    reference.mesh = io::read_triangle_mesh(spec);
+  } else if (ext == "ply") {
+    // A PLY file may be a mesh or a point set: faces decide. read_polygon_mesh refuses a
+    // file without faces, and the point reader then gives the real error, if any.
+    try {
+      reference.mesh = mesh::triangulate_polygons(io::read_polygon_mesh(spec));
+    } catch (const IoError&) {
+      reference.points = io::read_points(spec).points;
+    }
+  } else {
+    reference.points = io::read_points(spec).points;
+  }
+  return reference;
+}
+
+}  // namespace envcrust::cli

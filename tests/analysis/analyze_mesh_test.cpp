@@ -1,0 +1,89 @@
+// The analyzer on the exact tessellation of every built-in surface must report the surface's
+// known topology: chi, boundary loops, orientability, boundary knot types and linking.
+#include "envcrust/analysis.h"
+#include "envcrust/surfaces.h"
+#include "fixtures/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace envcrust;
+
+class BuiltinTessellation : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BuiltinTessellation, analyzer_reports_the_expected_topology) {
+  const auto surface = surfaces::make_builtin(GetParam());
+  const auto expected = surface->expected_topology();
+  const auto mesh = surfaces::tessellate(*surface);
+  const auto report = analysis::analyze_mesh(mesh);
+  const auto& t = report.topology;
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.degenerate_faces, 0u);
+  EXPECT_EQ(t.euler_characteristic, expected.euler_characteristic);
+  EXPECT_EQ(static_cast<int>(t.boundary_loops.size()), expected.boundary_loops);
+  EXPECT_EQ(t.is_orientable, expected.is_orientable);
+  if (expected.is_orientable) {
+    EXPECT_EQ(t.misoriented_edges, 0u);
+  }
+  ASSERT_EQ(report.loops.size(), expected.boundary_knots.size());
+  for (std::size_t i = 0; i < report.loops.size(); ++i) {
+    ASSERT_TRUE(report.loops[i].knot.has_value()) << "loop " << i;
+    EXPECT_EQ(knots::to_string(report.loops[i].knot->type), expected.boundary_knots[i]) << "loop " << i;
+  }
+  if (expected.boundary_loops == 2) {
+    ASSERT_EQ(report.linking.size(), 1u);
+    EXPECT_EQ(std::abs(report.linking[0].linking_number), expected.abs_linking_number);
+    EXPECT_TRUE(report.linking[0].is_signed);
+  }
+  EXPECT_TRUE(report.warnings.empty()) << report.warnings.front();
+}
+
+INSTANTIATE_TEST_SUITE_P(AllSurfaces, BuiltinTessellation,
+                         ::testing::ValuesIn(surfaces::builtin_names()),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(Analysis, tessellation_matches_its_surface_and_boundary_within_tolerance) {
+  const auto surface = surfaces::make_builtin("cylinder");
+  analysis::Reference reference;
+  reference.mesh = surfaces::tessellate(*surface);
+  for (const auto& c : surfaces::boundary_curves(*surface, 0.01)) reference.boundary.push_back(c.polyline());
+  const auto coarse = fixtures::open_cylinder(32, 4);
+  analysis::AnalyzeOptions options;
+  options.distance.samples = 20000;
+  const auto report = analysis::analyze_mesh(coarse, reference, options);
+  ASSERT_TRUE(report.distance.has_value());
+  const double sagitta = 1 - std::cos(3.141592653589793 / 32);
+  EXPECT_NEAR(report.distance->hausdorff, sagitta, 0.05 * sagitta);
+  ASSERT_EQ(report.boundary_matches.size(), 2u);
+  for (const auto& m : report.boundary_matches) {
+    ASSERT_TRUE(m.mesh_loop.has_value());
+    EXPECT_NEAR(m.hausdorff, sagitta, 0.05 * sagitta);
+  }
+  EXPECT_NE(*report.boundary_matches[0].mesh_loop, *report.boundary_matches[1].mesh_loop);
+}
+
+TEST(Analysis, capped_cylinder_has_no_boundary_to_match) {
+  analysis::Reference reference;
+  reference.boundary.push_back({{1, 0, 1}, {0, 1, 1}, {-1, 0, 1}});
+  const auto report = analysis::analyze_mesh(fixtures::capped_cylinder(), reference);
+  ASSERT_EQ(report.boundary_matches.size(), 1u);
+  EXPECT_FALSE(report.boundary_matches[0].mesh_loop.has_value());
+  EXPECT_TRUE(report.topology.is_closed());
+}
+
+TEST(Analysis, non_manifold_mesh_is_reported_in_warnings) {
+  auto m = fixtures::square(2);
+  m.vertices.push_back({0.25, 0, 1});
+  m.triangles.push_back({0, 1, Index(m.vertices.size() - 1)});
+  m.vertices.push_back({0.25, 0, -1});
+  m.triangles.push_back({0, 1, Index(m.vertices.size() - 1)});
+  const auto report = analysis::analyze_mesh(m);
+  ASSERT_FALSE(report.warnings.empty());
+  EXPECT_EQ(report.warnings[0], "1 non-manifold edges");
+}

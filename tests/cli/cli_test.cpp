@@ -1,0 +1,150 @@
+// End-to-end tests of the envcrust binary: outputs, reports, exit codes and error messages.
+#include "envcrust/io.h"
+#include "run_command.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+using envcrust::testing::run_envcrust;
+namespace fs = std::filesystem;
+
+namespace {
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("envcrust_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(CliTest, every_subcommand_has_help) {
+  for (const std::string sub : {"sample", "analyze"}) {
+    const auto r = run_envcrust(sub + " --help");
+    EXPECT_EQ(r.exit_code, 0) << sub;
+    EXPECT_NE(r.out.find("--json"), std::string::npos) << sub;
+  }
+  EXPECT_EQ(run_envcrust("--help").exit_code, 0);
+}
+
+TEST_F(CliTest, missing_subcommand_is_a_usage_error) {
+  const auto r = run_envcrust("");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("envcrust: usage error:"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, sample_list_names_every_surface_with_its_topology) {
+  const auto r = run_envcrust("sample --list --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.size(), 13u);
+  bool saw_moebius = false;
+  for (const auto& s : j) {
+    if (s["name"] == "moebius") {
+      saw_moebius = true;
+      EXPECT_EQ(s["expected"]["orientable"], false);
+      EXPECT_EQ(s["expected"]["boundary_loops"], 1);
+    }
+  }
+  EXPECT_TRUE(saw_moebius);
+}
+
+TEST_F(CliTest, sample_writes_the_requested_number_of_points_deterministically) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 500 --seed 7 --normals -q -o " + path("a.xyz")).exit_code, 0);
+  ASSERT_EQ(run_envcrust("sample cylinder -n 500 --seed 7 --normals -q -o " + path("b.xyz")).exit_code, 0);
+  const auto a = envcrust::io::read_points(path("a.xyz"));
+  const auto b = envcrust::io::read_points(path("b.xyz"));
+  ASSERT_EQ(a.size(), 500u);
+  ASSERT_TRUE(a.has_normals());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a.points[i], b.points[i]);
+    const double r = std::hypot(a.points[i].x(), a.points[i].y());
+    EXPECT_NEAR(r, 1.0, 1e-12);
+  }
+}
+
+TEST_F(CliTest, unknown_surface_is_refused_with_the_known_names) {
+  const auto r = run_envcrust("sample nosuch -n 5 -o " + path("x.xyz"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: unknown surface 'nosuch' (known: cylinder,", 0), 0u) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.xyz")));
+}
+
+TEST_F(CliTest, analyze_reports_a_moebius_tessellation_as_non_orientable) {
+  ASSERT_EQ(run_envcrust("sample moebius --mesh -q -o " + path("m.ply")).exit_code, 0);
+  const auto r = run_envcrust("analyze " + path("m.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["euler_characteristic"], 0);
+  EXPECT_EQ(j["boundary_loops"], 1);
+  EXPECT_EQ(j["is_orientable"], false);
+  EXPECT_EQ(j["is_manifold"], true);
+  EXPECT_EQ(j["loops"][0]["knot"]["type"], "unknot");
+}
+
+TEST_F(CliTest, analyze_against_a_builtin_reference_measures_distances_and_boundaries) {
+  ASSERT_EQ(run_envcrust("sample trefoil-ribbon --mesh -q -o " + path("t.off")).exit_code, 0);
+  const auto r = run_envcrust("analyze " + path("t.off") + " --reference builtin:trefoil-ribbon --samples 20000 --json --report " + path("rep.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j, nlohmann::json::parse(envcrust::testing::slurp(path("rep.json"))));
+  EXPECT_EQ(j["loops"][0]["knot"]["type"], "trefoil");
+  EXPECT_EQ(j["loops"][1]["knot"]["type"], "trefoil");
+  EXPECT_EQ(std::abs(j["linking"][0]["linking_number"].get<int>()), 3);
+  EXPECT_LT(j["distance"]["hausdorff_rel_diag"].get<double>(), 1e-6);
+  ASSERT_EQ(j["boundary_matches"].size(), 2u);
+  for (const auto& m : j["boundary_matches"]) EXPECT_LT(m["hausdorff_rel_diag"].get<double>(), 1e-3);
+}
+
+TEST_F(CliTest, analyze_a_point_reference) {
+  ASSERT_EQ(run_envcrust("sample sphere --mesh -q -o " + path("s.obj")).exit_code, 0);
+  ASSERT_EQ(run_envcrust("sample sphere -n 2000 -q -o " + path("s.xyz")).exit_code, 0);
+  const auto r = run_envcrust("analyze " + path("s.obj") + " -r " + path("s.xyz") + " --samples 5000 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_LT(j["distance"]["reference_to_mesh"]["max"].get<double>(), 1e-3);
+  // Mesh points are up to the sampling gap away from the nearest of 2000 points.
+  EXPECT_GT(j["distance"]["mesh_to_reference"]["max"].get<double>(), 0.02);
+}
+
+TEST_F(CliTest, analyze_curve_reports_the_knot_type) {
+  ASSERT_EQ(run_envcrust("sample trefoil-ribbon -q --boundary-out " + path("loop.polyline")).exit_code, 0);
+  const auto r = run_envcrust("analyze --curve " + path("loop.0.polyline") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["knot"]["type"], "trefoil");
+  const auto text = run_envcrust("analyze --curve " + path("loop.1.polyline"));
+  EXPECT_NE(text.out.find("trefoil (Alexander polynomial t^2 - t + 1"), std::string::npos) << text.out;
+}
+
+TEST_F(CliTest, analyze_missing_file_names_it) {
+  const auto r = run_envcrust("analyze " + path("none.off"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: " + path("none.off") + ":", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+}
+
+TEST_F(CliTest, analyze_needs_a_mesh_or_a_curve) {
+  const auto r = run_envcrust("analyze");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "envcrust: usage error: analyze: a MESH (or --curve CURVE) is required\n");
+}
+
+TEST_F(CliTest, garbage_mesh_is_an_error_not_a_crash) {
+  {
+    std::ofstream f(path("bad.off"));
+    f << "OFF\n3 1 0\n0 0 0\n1 0 0\n";
+  }
+  const auto r = run_envcrust("analyze " + path("bad.off"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: " + path("bad.off"), 0), 0u) << r.err;
+}
