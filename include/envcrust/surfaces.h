@@ -69,23 +69,9 @@ class Surface {
   [[nodiscard]] SurfacePoint point_at(double u, double v) const;
 };
 
-/// One vertex of a sampled boundary curve: position, unit tangent t (along the loop), unit
-/// normal line n, and outward conormal c (tangent to the surface, perpendicular to t,
-/// pointing away from the surface). At a corner of the domain (square), `is_corner` is set,
-/// `tangent` and `conormal` are those of the edge arriving at the corner and `conormal_next`
-/// holds the conormal of the following edge.
-struct BoundaryVertex {
-  Point3 position;
-  Vector3 tangent, normal, conormal;
-  bool is_corner = false;
-  Vector3 conormal_next = Vector3(0, 0, 0);
-};
-
-/// A closed boundary loop, in order (the first vertex is not repeated at the end).
-struct BoundaryCurve {
-  std::vector<BoundaryVertex> vertices;
-  [[nodiscard]] Polyline polyline() const;
-};
+/// Boundary curves are the shared envcrust types (types.h); these aliases keep the names.
+using envcrust::BoundaryCurve;
+using envcrust::BoundaryVertex;
 
 /// Names of all built-in surfaces, in a stable order.
 std::vector<std::string> builtin_names();

@@ -43,4 +43,22 @@ struct TriangleMesh {
 /// An ordered sequence of points; closed curves do not repeat the first point at the end.
 using Polyline = std::vector<Point3>;
 
+/// One vertex of a sampled boundary curve: position, unit tangent t (along the loop), unit
+/// normal line n, and outward conormal c (tangent to the surface, perpendicular to t,
+/// pointing away from the surface). At a corner of the domain (square), `is_corner` is set,
+/// `tangent` and `conormal` are those of the edge arriving at the corner and `conormal_next`
+/// holds the conormal of the following edge.
+struct BoundaryVertex {
+  Point3 position;
+  Vector3 tangent, normal, conormal;
+  bool is_corner = false;
+  Vector3 conormal_next = Vector3(0, 0, 0);
+};
+
+/// A closed boundary loop, in order (the first vertex is not repeated at the end).
+struct BoundaryCurve {
+  std::vector<BoundaryVertex> vertices;
+  [[nodiscard]] Polyline polyline() const;  ///< the positions, in order
+};
+
 }  // namespace envcrust

@@ -5,6 +5,17 @@
 
 #include <cmath>
 
+namespace envcrust {
+
+Polyline BoundaryCurve::polyline() const {
+  Polyline points;
+  points.reserve(vertices.size());
+  for (const BoundaryVertex& vertex : vertices) points.push_back(vertex.position);
+  return points;
+}
+
+}  // namespace envcrust
+
 namespace envcrust::mesh {
 
 double bbox_diagonal(const std::vector<Point3>& points) {

@@ -50,11 +50,5 @@ SurfacePoint Surface::point_at(double u, double v) const {
   return result;
 }
 
-Polyline BoundaryCurve::polyline() const {
-  Polyline points;
-  points.reserve(vertices.size());
-  for (const BoundaryVertex& vertex : vertices) points.push_back(vertex.position);
-  return points;
-}
 
 }  // namespace envcrust::surfaces
