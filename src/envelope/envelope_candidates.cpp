@@ -1,0 +1,138 @@
+// Candidate generation on the three parts of the envelope (METHOD.md §3.1).
+#include "envelope_candidates.h"
+
+#include "nearest_index.h"
+#include "random.h"
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace envcrust::envelope {
+namespace {
+
+using SearchTraits = CGAL::Search_traits_3<Kernel>;
+using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
+
+constexpr unsigned kNeighbors = 8;  // r_k of the 8th neighbour covers the gaps of random samples
+
+Vector3 unit(const Vector3& v) {
+  const double len = std::sqrt(v.squared_length());
+  return len > 0 ? v / len : v;
+}
+
+// Any unit vector perpendicular to n.
+Vector3 perpendicular(const Vector3& n) {
+  const Vector3 a = std::abs(n.x()) < 0.9 ? Vector3(1, 0, 0) : Vector3(0, 1, 0);
+  return unit(CGAL::cross_product(n, a));
+}
+
+void add_pair(std::vector<EnvelopeSample>& out, const Point3& g, const Vector3& n, double rho,
+              EnvelopePart part, int curve) {
+  out.push_back({g + rho * n, g, n, part, curve});
+  out.push_back({g - rho * n, g, -n, part, curve});
+}
+
+}  // namespace
+
+std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, double rho, double h,
+                                             double per_h2, std::uint64_t seed,
+                                             double& largest_gap) {
+  NeighborSearch::Tree tree(s.points.begin(), s.points.end());
+  tree.build();
+  // Generators spread over a tangent disk must stay on M: near a boundary curve, drop those
+  // beyond it (the rim covers that part of the envelope).
+  std::vector<Point3> rim_points;
+  std::vector<Vector3> rim_conormals;
+  for (const auto& curve : s.boundary)
+    for (const auto& b : curve.vertices) {
+      rim_points.push_back(b.position);
+      rim_conormals.push_back(b.conormal);
+    }
+  const NearestIndex rim_index(rim_points);
+  auto beyond_boundary = [&](const Point3& g) {
+    if (rim_index.empty()) return false;
+    const auto [b, d] = rim_index.nearest(g);
+    return (g - rim_points[b]) * rim_conormals[b] > 0.0;
+  };
+  std::mt19937_64 rng(seed);
+  std::vector<EnvelopeSample> out;
+  out.reserve(4 * s.points.size());
+  largest_gap = 0.0;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Point3& p = s.points[i];
+    const Vector3 n = unit(s.normals[i]);
+    double rk2 = 0.0;
+    NeighborSearch search(tree, p, std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(s.points.size())));
+    for (const auto& hit : search) rk2 = std::max(rk2, hit.second);
+    const double rk = std::sqrt(rk2);
+    largest_gap = std::max(largest_gap, rk);
+    // Disks of radius r_k overlap about k times, so m generators per disk give a density of
+    // about k m / (pi r_k^2); ask for per_h2 / h^2.
+    const double wanted = per_h2 * std::numbers::pi * rk2 / (kNeighbors * h * h);
+    const int m = std::clamp(static_cast<int>(std::ceil(wanted)), 1, 64);
+    const Vector3 e1 = perpendicular(n);
+    const Vector3 e2 = CGAL::cross_product(n, e1);
+    add_pair(out, p, n, rho, EnvelopePart::Sheet, -1);
+    for (int k = 1; k < m; ++k) {
+      const double r = rk * std::sqrt(uniform01(rng));
+      const double a = 2.0 * std::numbers::pi * uniform01(rng);
+      const Point3 g = p + r * std::cos(a) * e1 + r * std::sin(a) * e2;
+      if (!beyond_boundary(g)) add_pair(out, g, n, rho, EnvelopePart::Sheet, -1);
+    }
+  }
+  return out;
+}
+
+std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& boundary, double rho,
+                                           double step) {
+  std::vector<EnvelopeSample> out;
+  const int arcs = std::max(4, static_cast<int>(std::ceil(std::numbers::pi * rho / step)));
+  for (std::size_t ci = 0; ci < boundary.size(); ++ci) {
+    const auto& vertices = boundary[ci].vertices;
+    const int curve = static_cast<int>(ci);
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const BoundaryVertex& a = vertices[i];
+      const BoundaryVertex& b = vertices[(i + 1) % vertices.size()];
+      const double len = std::sqrt(CGAL::squared_distance(a.position, b.position));
+      const int pieces = std::max(1, static_cast<int>(std::ceil(len / step)));
+      // Conormal leaving a corner is conormal_next; the segment interpolates to b's arriving one.
+      const Vector3 ca = a.is_corner ? a.conormal_next : a.conormal;
+      Vector3 nb = b.normal;
+      if (nb * a.normal < 0) nb = -nb;  // normal lines: make neighbours agree before blending
+      Vector3 cb = b.conormal;
+      for (int k = 0; k < pieces; ++k) {
+        const double f = static_cast<double>(k) / pieces;
+        const Point3 g = a.position + f * (b.position - a.position);
+        const Vector3 n = unit((1 - f) * a.normal + f * nb);
+        Vector3 c = (1 - f) * ca + f * cb;
+        c = unit(c - (c * n) * n);
+        for (int j = 0; j <= arcs; ++j) {
+          const double theta = std::numbers::pi * j / arcs;
+          const Vector3 u = unit(std::cos(theta) * n + std::sin(theta) * c);
+          out.push_back({g + rho * u, g, u, EnvelopePart::Rim, curve});
+        }
+      }
+      // Lune at a convex corner: the arriving edge runs out past the leaving edge's side.
+      if (a.is_corner && a.tangent * a.conormal_next > 0) {
+        const double angle = std::acos(std::clamp(a.conormal * a.conormal_next, -1.0, 1.0));
+        const int sweeps = std::max(1, static_cast<int>(std::ceil(angle * rho / step)));
+        for (int s = 1; s < sweeps; ++s) {
+          const double f = static_cast<double>(s) / sweeps;
+          const Vector3 d = unit((1 - f) * a.conormal + f * a.conormal_next);
+          for (int j = 1; j < arcs; ++j) {
+            const double phi = std::numbers::pi * j / arcs;
+            const Vector3 u = unit(std::cos(phi) * a.normal + std::sin(phi) * d);
+            out.push_back({a.position + rho * u, a.position, u, EnvelopePart::Corner, curve});
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace envcrust::envelope

@@ -1,0 +1,48 @@
+// Nearest-neighbour queries that return indices into a point vector (kd-tree).
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <cmath>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+namespace envcrust::envelope {
+
+/// kd-tree over indices of an external point vector (which must outlive it).
+class NearestIndex {
+ public:
+  explicit NearestIndex(const std::vector<Point3>& points)
+      : points_(points), map_(points.data()) {
+    std::vector<std::size_t> ids(points.size());
+    std::iota(ids.begin(), ids.end(), std::size_t{0});
+    tree_ = std::make_unique<Tree>(ids.begin(), ids.end(), Splitter(), Traits(map_));
+    tree_->build();
+  }
+  [[nodiscard]] bool empty() const { return points_.empty(); }
+  /// Index of the nearest point and its distance. @pre !empty()
+  std::pair<std::size_t, double> nearest(const Point3& q) const {
+    Search search(*tree_, q, 1, 0, true, Distance(map_));
+    const auto it = search.begin();
+    return {it->first, std::sqrt(it->second)};
+  }
+
+ private:
+  using Map = CGAL::Pointer_property_map<Point3>::const_type;
+  using Traits = CGAL::Search_traits_adapter<std::size_t, Map, CGAL::Search_traits_3<Kernel>>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
+  using Tree = Search::Tree;
+  using Splitter = Search::Splitter;
+  using Distance = Search::Distance;
+  const std::vector<Point3>& points_;
+  Map map_;
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace envcrust::envelope

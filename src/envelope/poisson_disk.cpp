@@ -1,0 +1,64 @@
+// Poisson-disk thinning on a hash grid.
+#include "poisson_disk.h"
+
+#include "random.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+namespace envcrust::envelope {
+namespace {
+
+struct CellKey {
+  std::int64_t x, y, z;
+  bool operator==(const CellKey&) const = default;
+};
+
+struct CellHash {
+  std::size_t operator()(const CellKey& k) const {
+    return static_cast<std::size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+  }
+};
+
+}  // namespace
+
+std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, double radius,
+                                           std::uint64_t seed) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937_64 rng(seed);
+  for (std::size_t i = order.size(); i > 1; --i)
+    std::swap(order[i - 1], order[static_cast<std::size_t>(uniform01(rng) * static_cast<double>(i))]);
+  const double cell = radius / std::sqrt(3.0);
+  const double r2 = radius * radius;
+  std::unordered_map<CellKey, std::size_t, CellHash> grid;
+  grid.reserve(points.size() / 4 + 16);
+  auto key_of = [&](const Point3& p) {
+    return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)),
+                   static_cast<std::int64_t>(std::floor(p.y() / cell)),
+                   static_cast<std::int64_t>(std::floor(p.z() / cell))};
+  };
+  std::vector<std::size_t> kept;
+  for (std::size_t index : order) {
+    const Point3& p = points[index];
+    const CellKey k = key_of(p);
+    bool free = true;
+    // Kept points within `radius` lie at most 2 cells away (cell = radius / sqrt 3).
+    for (std::int64_t dx = -2; dx <= 2 && free; ++dx)
+      for (std::int64_t dy = -2; dy <= 2 && free; ++dy)
+        for (std::int64_t dz = -2; dz <= 2 && free; ++dz) {
+          const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
+          if (it != grid.end() && CGAL::squared_distance(points[it->second], p) <= r2) free = false;
+        }
+    if (free) {
+      grid.emplace(k, index);
+      kept.push_back(index);
+    }
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+}  // namespace envcrust::envelope

@@ -1,0 +1,17 @@
+// Poisson-disk thinning: keep a maximal subset of points at pairwise distance >= radius.
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace envcrust::envelope {
+
+/// Indices of the kept points, in increasing order. Points are visited in a seeded random
+/// order, and a point is kept when no kept point lies within `radius` (hash grid of cell
+/// radius / sqrt 3, so a cell holds at most one kept point).
+std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, double radius,
+                                           std::uint64_t seed);
+
+}  // namespace envcrust::envelope

@@ -1,0 +1,127 @@
+// sample_envelope: rho, candidates, clearance filter, one global Poisson-disk pass.
+#include "envcrust/envelope.h"
+#include "envcrust/errors.h"
+#include "envcrust/mesh.h"
+
+#include "envelope_candidates.h"
+#include "poisson_disk.h"
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace envcrust::envelope {
+namespace {
+
+using SearchTraits = CGAL::Search_traits_3<Kernel>;
+using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
+
+constexpr double kCandidatesPerH2 = 12.0;  // METHOD.md §3.1 asks for >= 10 per h^2
+constexpr double kRimStepRelH = 1.0 / 3.3;  // rims resampled so that ~10 candidates fall per h^2
+
+std::string format(double x) {
+  std::ostringstream s;
+  s.precision(4);
+  s << x;
+  return s.str();
+}
+
+void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
+  if (s.points.empty()) throw InvalidInput("envelope: no surface samples");
+  if (s.points.size() != s.normals.size())
+    throw InvalidInput("envelope: " + std::to_string(s.points.size()) + " points but " +
+                       std::to_string(s.normals.size()) + " normals");
+  auto check = [](bool ok, const std::string& field, double value) {
+    if (!ok) throw InvalidOptions("EnvelopeOptions::" + field + " out of range (got " + format(value) + ")");
+  };
+  if (o.rho) check(*o.rho > 0 && std::isfinite(*o.rho), "rho", *o.rho);
+  check(o.rho_rel_reach > 0 && o.rho_rel_reach < 1, "rho_rel_reach", o.rho_rel_reach);
+  check(o.max_reach_rel_diag > 0, "max_reach_rel_diag", o.max_reach_rel_diag);
+  check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 1, "spacing_rel_rho", o.spacing_rel_rho);
+  check(o.sheet_clearance > 0 && o.sheet_clearance <= 1, "sheet_clearance", o.sheet_clearance);
+  check(o.rim_clearance > 0 && o.rim_clearance <= 1, "rim_clearance", o.rim_clearance);
+}
+
+}  // namespace
+
+std::vector<Point3> EnvelopeSamples::points() const {
+  std::vector<Point3> out;
+  out.reserve(samples.size());
+  for (const auto& s : samples) out.push_back(s.position);
+  return out;
+}
+
+EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOptions& options) {
+  validate(surface, options);
+  EnvelopeSamples out;
+  const double diag = mesh::bbox_diagonal(surface.points);
+  if (options.rho) {
+    out.rho = *options.rho;
+  } else {
+    out.reach = estimate_reach(surface, ReachOptions{.seed = options.seed});
+    const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
+    out.rho = options.rho_rel_reach * capped;
+  }
+  out.spacing = options.spacing_rel_rho * out.rho;
+
+  double largest_gap = 0.0;
+  std::vector<EnvelopeSample> candidates =
+      sheet_candidates(surface, out.rho, out.spacing, kCandidatesPerH2, options.seed, largest_gap);
+  out.input_coverage = largest_gap;
+  const auto rims = rim_candidates(surface.boundary, out.rho, kRimStepRelH * out.spacing);
+  candidates.insert(candidates.end(), rims.begin(), rims.end());
+  out.candidates = candidates.size();
+
+  // Clearance: a candidate nearer than the clearance to M is not on its envelope (the
+  // envelope of a sampled surface, or a self-intersecting envelope when rho is too large).
+  std::vector<Point3> reference = surface.points;
+  for (const auto& c : surface.boundary)
+    for (const auto& b : c.vertices) reference.push_back(b.position);
+  NeighborSearch::Tree tree(reference.begin(), reference.end());
+  tree.build();
+  std::vector<char> keep(candidates.size(), 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      NeighborSearch search(tree, candidates[i].position, 1);
+      const double d = std::sqrt(search.begin()->second);
+      const double clearance =
+          candidates[i].part == EnvelopePart::Sheet ? options.sheet_clearance : options.rim_clearance;
+      if (d < clearance * out.rho) keep[i] = 0;
+    }
+  });
+  std::size_t sheet_total = 0, sheet_dropped = 0;
+  std::vector<EnvelopeSample> kept_candidates;
+  kept_candidates.reserve(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i].part == EnvelopePart::Sheet) {
+      ++sheet_total;
+      if (!keep[i]) ++sheet_dropped;
+    }
+    if (keep[i]) kept_candidates.push_back(candidates[i]);
+  }
+  out.dropped_too_close = candidates.size() - kept_candidates.size();
+  if (sheet_total > 0 && static_cast<double>(sheet_dropped) > 1e-3 * static_cast<double>(sheet_total)) {
+    out.warnings.push_back("rho " + format(out.rho) + " may be too large: " +
+                           std::to_string(sheet_dropped) + " of " + std::to_string(sheet_total) +
+                           " sheet candidates come closer than " + format(options.sheet_clearance) +
+                           " rho to the surface (the envelope folds onto itself)");
+  }
+
+  std::vector<Point3> positions;
+  positions.reserve(kept_candidates.size());
+  for (const auto& c : kept_candidates) positions.push_back(c.position);
+  for (std::size_t index : poisson_disk_thin(positions, out.spacing, options.seed))
+    out.samples.push_back(kept_candidates[index]);
+  if (largest_gap > 3.0 * out.rho) {
+    out.warnings.push_back("the input has gaps of " + format(largest_gap) + " (rho is " + format(out.rho) +
+                           "): the envelope may have holes; rho >= " + format(largest_gap / 3.0) +
+                           " or denser input would work");
+  }
+  return out;
+}
+
+}  // namespace envcrust::envelope

@@ -1,0 +1,135 @@
+// Tests of reach estimation and envelope sampling on built-in surfaces with exact normals.
+#include "envcrust/distance.h"
+#include "envcrust/envelope.h"
+#include "envcrust/errors.h"
+#include "envcrust/surfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace envcrust;
+
+namespace {
+
+envelope::SurfaceSamples exact_samples(const std::string& name, std::size_t n, std::uint64_t seed = 1) {
+  const auto surface = surfaces::make_builtin(name);
+  surfaces::SampleOptions o;
+  o.count = n;
+  o.with_normals = true;
+  o.seed = seed;
+  const PointSet ps = surfaces::sample_surface(*surface, o);
+  envelope::SurfaceSamples s{ps.points, ps.normals, {}};
+  s.boundary = surfaces::boundary_curves(*surface, 0.01 * surfaces::bbox_diagonal(*surface));
+  return s;
+}
+
+// Distance from x to the open cylinder of radius 1, z in [-1, 1].
+double distance_to_cylinder(const Point3& x) {
+  const double r = std::hypot(x.x(), x.y());
+  const double dz = std::max(0.0, std::abs(x.z()) - 1.0);
+  return std::hypot(r - 1.0, dz);
+}
+
+}  // namespace
+
+TEST(Reach, sphere_reach_is_its_radius) {
+  const auto r = envelope::estimate_reach(exact_samples("sphere", 5000));
+  EXPECT_NEAR(r.reach, 1.0, 0.02);
+}
+
+TEST(Reach, cylinder_reach_is_limited_by_curvature_one) {
+  const auto r = envelope::estimate_reach(exact_samples("cylinder", 5000));
+  EXPECT_NEAR(r.reach, 1.0, 0.03);
+}
+
+TEST(Reach, trefoil_ribbon_reach_is_limited_by_the_strand_gap) {
+  // Strands of the ribbon pass 1.452 - 0.5 = 0.952 apart above each other at the crossings of
+  // the projection, so the bottleneck Delta/2 is about 0.476, below the curvature radius 1.
+  const auto r = envelope::estimate_reach(exact_samples("trefoil-ribbon", 8000));
+  EXPECT_LT(r.reach, 0.5);
+  EXPECT_GT(r.reach, 0.4);
+  EXPECT_NEAR(r.bottleneck, r.reach, 1e-12);
+}
+
+TEST(Envelope, cylinder_samples_lie_on_the_envelope_and_cover_it) {
+  const auto s = exact_samples("cylinder", 10000);
+  envelope::EnvelopeOptions o;
+  o.rho = 0.2;
+  const auto e = envelope::sample_envelope(s, o);
+  EXPECT_DOUBLE_EQ(e.rho, 0.2);
+  EXPECT_DOUBLE_EQ(e.spacing, 0.05);
+  ASSERT_GT(e.samples.size(), 1000u);
+  double worst = 0.0;
+  std::size_t rims = 0;
+  for (const auto& x : e.samples) {
+    const double err = std::abs(distance_to_cylinder(x.position) - 0.2);
+    worst = std::max(worst, err);
+    if (x.part == envelope::EnvelopePart::Rim) ++rims;
+  }
+  // Tangent-disk generators leave the surface by kappa r_k^2 / 2: r_k (8th neighbour of 10k
+  // random points) reaches 0.08 here, so up to 0.0032, a little more on the inner sheet.
+  EXPECT_LT(worst, 0.03 * 0.2);
+  EXPECT_GT(rims, 100u);
+  // Coverage: points on the true envelope are within ~h of a sample.
+  std::vector<Point3> truth;
+  for (int i = 0; i < 400; ++i) {
+    const double a = 2 * 3.141592653589793 * i / 400;
+    for (int j = 0; j <= 20; ++j) {
+      const double z = -1 + 2.0 * j / 20;
+      truth.emplace_back(1.2 * std::cos(a), 1.2 * std::sin(a), z);
+      truth.emplace_back(0.8 * std::cos(a), 0.8 * std::sin(a), z);
+    }
+    for (int j = 0; j <= 10; ++j) {  // top rim half-circle
+      const double t = 3.141592653589793 * j / 10;
+      const double r = 1 + 0.2 * std::cos(t);
+      truth.emplace_back(r * std::cos(a), r * std::sin(a), 1 + 0.2 * std::sin(t));
+    }
+  }
+  const auto gap = distance::points_to_points(truth, e.points());
+  EXPECT_LT(gap.max, 1.3 * e.spacing);
+  // Poisson disk: no two samples closer than h.
+  const auto self = e.points();
+  for (std::size_t i = 0; i < self.size(); i += 97) {
+    for (std::size_t j = 0; j < self.size(); ++j) {
+      if (i != j) {
+        ASSERT_GE(CGAL::squared_distance(self[i], self[j]), 0.05 * 0.05 * (1 - 1e-12));
+      }
+    }
+  }
+  EXPECT_TRUE(e.warnings.empty());
+}
+
+TEST(Envelope, automatic_rho_is_half_the_reach_capped_by_the_size) {
+  const auto e = envelope::sample_envelope(exact_samples("cylinder", 5000));
+  // Reach 1, cap 0.1 * diag = 0.346: rho = 0.173.
+  EXPECT_NEAR(e.rho, 0.5 * 0.1 * std::sqrt(12.0), 1e-3);  // diag of the samples
+  const auto sphere = envelope::sample_envelope(exact_samples("torus", 8000));
+  EXPECT_NEAR(sphere.rho, 0.5 * 0.4, 0.02);  // torus tube radius 0.4 limits the reach
+}
+
+TEST(Envelope, too_large_rho_is_reported) {
+  envelope::EnvelopeOptions o;
+  o.rho = 1.5;  // beyond the cylinder's reach 1: the inner sheet folds through the axis
+  const auto e = envelope::sample_envelope(exact_samples("cylinder", 3000), o);
+  ASSERT_FALSE(e.warnings.empty());
+  EXPECT_EQ(e.warnings[0].rfind("rho 1.5 may be too large:", 0), 0u) << e.warnings[0];
+}
+
+TEST(Envelope, bad_options_and_inputs_are_refused) {
+  envelope::EnvelopeOptions o;
+  o.spacing_rel_rho = 0;
+  try {
+    envelope::sample_envelope(exact_samples("sphere", 100), o);
+    FAIL();
+  } catch (const InvalidOptions& e) {
+    EXPECT_STREQ(e.what(), "EnvelopeOptions::spacing_rel_rho out of range (got 0)");
+  }
+  envelope::SurfaceSamples bad{{Point3(0, 0, 0)}, {}, {}};
+  try {
+    envelope::sample_envelope(bad);
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "envelope: 1 points but 0 normals");
+  }
+}
