@@ -58,11 +58,18 @@ struct MeshTopology {
   [[nodiscard]] bool is_closed() const { return boundary_edges == 0; }
 };
 
+/// Options of analyze_topology.
+struct TopologyOptions {
+  /// Merge vertices with identical coordinates first (files often repeat them, e.g. STL and
+  /// soups). Off: indices are taken as given, and loops index the input's vertices.
+  bool weld_identical_vertices = true;
+};
+
 /// Analyze the topology of a triangle mesh. Faces with a repeated vertex are ignored (and
 /// counted as degenerate); zero-area faces with three distinct vertices are counted as
 /// degenerate but kept, so the numbers describe the mesh as a simplicial complex.
 /// @throws InvalidInput if a face index is out of range ("face 12 has vertex index 40, but
 /// the mesh has 30 vertices").
-MeshTopology analyze_topology(const TriangleMesh& mesh);
+MeshTopology analyze_topology(const TriangleMesh& mesh, const TopologyOptions& options = {});
 
 }  // namespace envcrust::topology

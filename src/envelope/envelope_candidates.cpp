@@ -1,7 +1,7 @@
 // Candidate generation on the three parts of the envelope (METHOD.md §3.1).
 #include "envelope_candidates.h"
 
-#include "nearest_index.h"
+#include "envcrust/nearest_index.h"
 #include "random.h"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "envcrust/topology.h"
-#include "mesh_graph.h"
+#include "envcrust/mesh_graph.h"
 
 namespace envcrust::topology {
 

@@ -1,7 +1,7 @@
 // Construction of the edge table and of the vertex fans (non-manifold vertex detection).
-#include "mesh_graph.h"
+#include "envcrust/mesh_graph.h"
 
-#include "union_find.h"
+#include "envcrust/union_find.h"
 
 #include <algorithm>
 #include <tuple>

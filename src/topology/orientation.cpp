@@ -1,5 +1,5 @@
 // Orientability by breadth-first propagation of face signs across two-face edges.
-#include "mesh_graph.h"
+#include "envcrust/mesh_graph.h"
 
 #include <queue>
 

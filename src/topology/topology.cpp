@@ -4,8 +4,8 @@
 #include "envcrust/topology.h"
 
 #include "boundary_loops.h"
-#include "mesh_graph.h"
-#include "union_find.h"
+#include "envcrust/mesh_graph.h"
+#include "envcrust/union_find.h"
 
 #include <algorithm>
 #include <string>
@@ -27,14 +27,15 @@ void check_indices(const TriangleMesh& mesh) {
 
 }  // namespace
 
-MeshTopology analyze_topology(const TriangleMesh& input) {
+MeshTopology analyze_topology(const TriangleMesh& input, const TopologyOptions& options) {
   check_indices(input);
   MeshTopology out;
   out.input_vertices = input.vertices.size();
 
   // Weld identical positions but keep every face (weld_identical_vertices drops unused
   // vertices, which is what we want for V).
-  const TriangleMesh mesh = mesh::weld_identical_vertices(input);
+  const TriangleMesh mesh =
+      options.weld_identical_vertices ? mesh::weld_identical_vertices(input) : input;
   {
     std::vector<bool> referenced(input.vertices.size(), false);
     for (const auto& t : input.triangles)
@@ -42,7 +43,7 @@ MeshTopology analyze_topology(const TriangleMesh& input) {
     std::size_t used_input = 0;
     for (bool r : referenced) used_input += r ? 1 : 0;
     out.unused_vertices = input.vertices.size() - used_input;
-    out.welded_vertices = used_input - mesh.vertices.size();
+    out.welded_vertices = options.weld_identical_vertices ? used_input - mesh.vertices.size() : 0;
   }
 
   std::vector<std::array<Index, 3>> faces;

@@ -1,5 +1,5 @@
 // Disjoint-set forest used for components and vertex fans.
-#include "union_find.h"
+#include "envcrust/union_find.h"
 
 #include <utility>
 

@@ -1,4 +1,4 @@
-// Nearest-neighbour queries that return indices into a point vector (kd-tree).
+// Nearest-neighbour queries that return indices into a point vector (CGAL kd-tree).
 #pragma once
 
 #include "envcrust/types.h"
@@ -13,7 +13,7 @@
 #include <numeric>
 #include <vector>
 
-namespace envcrust::envelope {
+namespace envcrust {
 
 /// kd-tree over indices of an external point vector (which must outlive it).
 class NearestIndex {
@@ -32,6 +32,13 @@ class NearestIndex {
     const auto it = search.begin();
     return {it->first, std::sqrt(it->second)};
   }
+  /// The k nearest points (index, distance), nearest first.
+  std::vector<std::pair<std::size_t, double>> nearest(const Point3& q, unsigned k) const {
+    std::vector<std::pair<std::size_t, double>> out;
+    Search search(*tree_, q, k, 0, true, Distance(map_));
+    for (const auto& hit : search) out.emplace_back(hit.first, std::sqrt(hit.second));
+    return out;
+  }
 
  private:
   using Map = CGAL::Pointer_property_map<Point3>::const_type;
@@ -45,4 +52,4 @@ class NearestIndex {
   std::unique_ptr<Tree> tree_;
 };
 
-}  // namespace envcrust::envelope
+}  // namespace envcrust

@@ -1,0 +1,62 @@
+// From the envelope back to M: the medial sheet of the envelope samples as a clean
+// 2-manifold triangle mesh with boundary (METHOD.md §5 c1).
+#pragma once
+
+#include "envcrust/envelope.h"
+#include "envcrust/types.h"
+
+#include <string>
+#include <vector>
+
+namespace envcrust::extract {
+
+/// Options of extract_sheet.
+struct SheetOptions {
+  /// A Delaunay edge pq of the envelope samples crosses the shell when the angle between the
+  /// offset directions u_p and u_q is at least this (METHOD.md §5 c1: 100 degrees; three
+  /// pairwise-selected rim edges cannot fit on a half-circle). Range (90, 180).
+  double min_angle_deg = 100.0;
+  /// A component of the sheet is kept when the median distance of its vertices to the surface
+  /// samples is below this fraction of rho (the outer medial axis of E lies >= R - rho away).
+  double max_component_distance_rel_rho = 0.5;
+  /// Components with less than this fraction of the total area are dropped.
+  double min_component_area_fraction = 0.01;
+  /// Boundary loops shorter than this many rho are holes below the envelope's resolution
+  /// and are filled (a true boundary is much longer than 2 pi rho). 0 disables.
+  double fill_loops_shorter_than_rel_rho = 2.0 * 3.141592653589793;
+  /// Move interior vertices onto the tangent plane of their nearest surface sample and
+  /// border vertices onto the nearest boundary curve, when no incident face flips.
+  bool use_projection = true;
+};
+
+/// What extract_sheet did.
+struct SheetStats {
+  std::size_t delaunay_edges = 0;       ///< finite edges examined
+  std::size_t crossing_edges = 0;       ///< edges selected by the angle test
+  std::size_t polygons = 0;             ///< dual Voronoi polygons kept
+  std::size_t components_dropped = 0;   ///< outer medial axis pieces and crumbs
+  std::size_t non_manifold_faces_removed = 0;
+  std::size_t vertices_split = 0;       ///< pinched vertices split into one per fan
+  std::size_t holes_filled = 0;
+  std::size_t vertices_projected = 0;
+  std::size_t projections_refused = 0;  ///< moves refused because a face would flip
+};
+
+/// The extracted sheet.
+struct SheetResult {
+  TriangleMesh mesh;
+  SheetStats stats;
+  std::vector<std::string> warnings;
+};
+
+/// Extract M from its envelope samples: Voronoi polygons dual to Delaunay edges that cross
+/// the shell, one vertex per Delaunay cell, then cleaned into a 2-manifold (non-manifold
+/// edges resolved, pinched vertices split, outer pieces and crumbs dropped, small holes
+/// filled) and projected onto the surface samples. Works for non-orientable M.
+/// @param surface the samples of M the envelope was built from (for distances/projection)
+/// @throws DegenerateInput when the envelope has fewer than 5 samples or is flat.
+SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
+                          const envelope::SurfaceSamples& surface,
+                          const SheetOptions& options = {});
+
+}  // namespace envcrust::extract

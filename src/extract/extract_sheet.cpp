@@ -1,0 +1,78 @@
+// extract_sheet: raw Voronoi sheet, triangles, cleaning, projection (METHOD.md §5 c1).
+#include "envcrust/errors.h"
+#include "envcrust/extract.h"
+
+#include "sheet_mesh.h"
+#include "sheet_projection.h"
+#include "voronoi_sheet.h"
+
+#include <sstream>
+
+namespace envcrust::extract {
+namespace {
+
+void validate(const SheetOptions& o) {
+  auto fail = [](const std::string& field, double value) {
+    std::ostringstream s;
+    s << "SheetOptions::" << field << " out of range (got " << value << ")";
+    throw InvalidOptions(s.str());
+  };
+  if (!(o.min_angle_deg > 90 && o.min_angle_deg < 180)) fail("min_angle_deg", o.min_angle_deg);
+  if (!(o.max_component_distance_rel_rho > 0)) fail("max_component_distance_rel_rho", o.max_component_distance_rel_rho);
+  if (!(o.min_component_area_fraction >= 0 && o.min_component_area_fraction < 1))
+    fail("min_component_area_fraction", o.min_component_area_fraction);
+  if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
+}
+
+}  // namespace
+
+SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
+                          const envelope::SurfaceSamples& surface, const SheetOptions& options) {
+  validate(options);
+  SheetResult result;
+  const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg);
+  result.stats.delaunay_edges = raw.delaunay_edges;
+  result.stats.crossing_edges = raw.crossing_edges;
+  result.stats.polygons = raw.polygons.size();
+
+  TaggedMesh sheet = triangulate_sheet(raw);
+  // Outer medial-axis pieces go first: they would otherwise meet the sheet at non-manifold
+  // edges and take part in the repairs.
+  result.stats.components_dropped += filter_components(
+      sheet, surface.points, options.max_component_distance_rel_rho * envelope.rho, 0.0);
+  result.stats.non_manifold_faces_removed = resolve_non_manifold_edges(sheet);
+  result.stats.vertices_split = split_pinched_vertices(sheet);
+  result.stats.components_dropped += filter_components(
+      sheet, surface.points, options.max_component_distance_rel_rho * envelope.rho,
+      options.min_component_area_fraction);
+  if (options.fill_loops_shorter_than_rel_rho > 0) {
+    result.stats.holes_filled =
+        fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * envelope.rho);
+    // Filling can pinch where a hole touched another loop.
+    result.stats.vertices_split += split_pinched_vertices(sheet);
+  }
+  compact_vertices(sheet);
+  if (options.use_projection) {
+    const auto moved = project_onto_samples(sheet, surface, envelope.rho);
+    trim_beyond_boundary(sheet, surface, 2.0 * envelope.rho);
+    // Trimming cuts off crumbs and leaves pinholes where single faces reached past the
+    // boundary.
+    result.stats.components_dropped += filter_components(
+        sheet, surface.points, options.max_component_distance_rel_rho * envelope.rho,
+        options.min_component_area_fraction);
+    if (options.fill_loops_shorter_than_rel_rho > 0)
+      result.stats.holes_filled +=
+          fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * envelope.rho);
+    result.stats.vertices_split += split_pinched_vertices(sheet);
+    compact_vertices(sheet);
+    const auto snapped = snap_border(sheet, surface, envelope.rho);
+    result.stats.vertices_projected = moved.moved + snapped.moved;
+    result.stats.projections_refused = moved.refused + snapped.refused;
+  }
+  result.mesh = std::move(sheet.mesh);
+  if (result.mesh.triangles.empty())
+    result.warnings.push_back("the extracted sheet is empty: the envelope is too sparse for rho");
+  return result;
+}
+
+}  // namespace envcrust::extract

@@ -1,0 +1,219 @@
+// Cleaning the raw sheet into a 2-manifold: non-manifold edges, pinched vertices, outer
+// pieces and crumbs, holes below the envelope's resolution (METHOD.md §5 c1 step 4).
+#include "sheet_mesh.h"
+
+#include "envcrust/mesh_graph.h"
+#include "envcrust/topology.h"
+#include "envcrust/union_find.h"
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace envcrust::extract {
+namespace {
+
+using SearchTraits = CGAL::Search_traits_3<Kernel>;
+using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
+
+void remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
+    if (remove[f]) continue;
+    t.mesh.triangles[kept] = t.mesh.triangles[f];
+    t.face_dot[kept] = t.face_dot[f];
+    ++kept;
+  }
+  t.mesh.triangles.resize(kept);
+  t.face_dot.resize(kept);
+}
+
+double face_area(const TriangleMesh& m, const std::array<Index, 3>& f) {
+  return std::sqrt(Kernel::Triangle_3(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]).squared_area());
+}
+
+}  // namespace
+
+std::size_t resolve_non_manifold_edges(TaggedMesh& t) {
+  std::vector<char> remove(t.mesh.triangles.size(), 0);
+  {  // duplicate faces (same vertex set): keep the first
+    std::vector<std::pair<std::array<Index, 3>, std::size_t>> keys;
+    keys.reserve(t.mesh.triangles.size());
+    for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
+      auto k = t.mesh.triangles[f];
+      std::sort(k.begin(), k.end());
+      keys.emplace_back(k, f);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+      if (keys[i].first == keys[i - 1].first) remove[keys[i].second] = 1;
+  }
+  const auto graph = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
+  for (std::size_t e = 0; e < graph.edges.size(); ++e) {
+    const std::uint32_t begin = graph.edge_face_begin[e];
+    const std::uint32_t end = graph.edge_face_begin[e + 1];
+    std::vector<std::uint32_t> faces;
+    for (std::uint32_t i = begin; i < end; ++i)
+      if (!remove[graph.edge_faces[i]]) faces.push_back(graph.edge_faces[i]);
+    if (faces.size() < 3) continue;
+    std::sort(faces.begin(), faces.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return t.face_dot[a] != t.face_dot[b] ? t.face_dot[a] < t.face_dot[b] : a < b;
+    });
+    for (std::size_t i = 2; i < faces.size(); ++i) remove[faces[i]] = 1;
+  }
+  const auto removed = static_cast<std::size_t>(std::count(remove.begin(), remove.end(), 1));
+  remove_faces(t, remove);
+  return removed;
+}
+
+std::size_t split_pinched_vertices(TaggedMesh& t) {
+  std::size_t copies = 0;
+  for (int round = 0; round < 4; ++round) {
+    const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
+    topology::UnionFind corners(3 * g.faces.size());
+    auto corner_of = [&](std::uint32_t face, Index vertex) {
+      const auto& f = g.faces[face];
+      return 3 * face + (f[0] == vertex ? 0u : (f[1] == vertex ? 1u : 2u));
+    };
+    for (std::size_t e = 0; e < g.edges.size(); ++e)
+      for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
+        for (Index v : {g.edges[e].first, g.edges[e].second})
+          corners.unite(corner_of(g.edge_faces[g.edge_face_begin[e]], v), corner_of(g.edge_faces[i], v));
+    // Fans of each vertex: root corner -> faces.
+    std::vector<std::map<std::uint32_t, std::vector<std::uint32_t>>> fans(g.num_vertices);
+    for (std::uint32_t f = 0; f < g.faces.size(); ++f)
+      for (std::uint32_t k = 0; k < 3; ++k) fans[g.faces[f][k]][corners.find(3 * f + k)].push_back(f);
+    std::vector<char> remove(g.faces.size(), 0);
+    bool changed = false;
+    for (Index v = 0; v < g.num_vertices; ++v) {
+      if (fans[v].size() < 2) continue;
+      changed = true;
+      std::vector<std::vector<std::uint32_t>> list;
+      for (auto& [root, faces] : fans[v]) list.push_back(std::move(faces));
+      std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) {
+        return a.size() != b.size() ? a.size() > b.size() : a.front() < b.front();
+      });
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        if (list[k].size() < 3) {
+          for (auto f : list[k]) remove[f] = 1;
+          continue;
+        }
+        if (k == 0) continue;  // the largest fan keeps the vertex
+        // The copy moves 1% of the mean edge towards the fan's centroid.
+        Vector3 centroid(0, 0, 0);
+        double edge_sum = 0.0;
+        std::size_t count = 0;
+        for (auto f : list[k]) {
+          for (Index w : t.mesh.triangles[f]) {
+            if (w == v) continue;
+            centroid = centroid + (t.mesh.vertices[w] - CGAL::ORIGIN);
+            edge_sum += std::sqrt(CGAL::squared_distance(t.mesh.vertices[w], t.mesh.vertices[v]));
+            ++count;
+          }
+        }
+        const Point3 c = CGAL::ORIGIN + centroid / static_cast<double>(count);
+        const Vector3 towards = c - t.mesh.vertices[v];
+        const double len = std::sqrt(towards.squared_length());
+        const double step = 0.01 * edge_sum / static_cast<double>(count);
+        const auto copy = static_cast<Index>(t.mesh.vertices.size());
+        t.mesh.vertices.push_back(len > 0 ? t.mesh.vertices[v] + (step / len) * towards : t.mesh.vertices[v]);
+        for (auto f : list[k])
+          for (Index& w : t.mesh.triangles[f])
+            if (w == v) w = copy;
+        ++copies;
+      }
+    }
+    remove_faces(t, remove);
+    if (!changed) break;
+  }
+  return copies;
+}
+
+std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_points,
+                              double max_distance, double min_area_fraction) {
+  if (t.mesh.triangles.empty()) return 0;
+  const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
+  topology::UnionFind uf(g.faces.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
+      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
+  std::map<std::uint32_t, std::vector<std::uint32_t>> components;
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f) components[uf.find(f)].push_back(f);
+  NeighborSearch::Tree tree(surface_points.begin(), surface_points.end());
+  tree.build();
+  double total_area = 0.0;
+  std::vector<double> areas;
+  std::vector<double> medians;
+  for (const auto& [root, faces] : components) {
+    double area = 0.0;
+    std::vector<Index> vertices;
+    for (auto f : faces) {
+      area += face_area(t.mesh, t.mesh.triangles[f]);
+      for (Index v : t.mesh.triangles[f]) vertices.push_back(v);
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    std::vector<double> d;
+    const std::size_t stride = std::max<std::size_t>(1, vertices.size() / 200);
+    for (std::size_t i = 0; i < vertices.size(); i += stride) {
+      NeighborSearch search(tree, t.mesh.vertices[vertices[i]], 1);
+      d.push_back(std::sqrt(search.begin()->second));
+    }
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+    medians.push_back(d[d.size() / 2]);
+    areas.push_back(area);
+    total_area += area;
+  }
+  std::vector<char> remove(g.faces.size(), 0);
+  std::size_t dropped = 0;
+  std::size_t index = 0;
+  for (const auto& [root, faces] : components) {
+    const bool keep = medians[index] < max_distance && areas[index] >= min_area_fraction * total_area;
+    if (!keep) {
+      ++dropped;
+      for (auto f : faces) remove[f] = 1;
+    }
+    ++index;
+  }
+  remove_faces(t, remove);
+  return dropped;
+}
+
+std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
+  const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
+  std::size_t filled = 0;
+  for (const auto& loop : topo.boundary_loops) {
+    if (loop.length >= max_length || loop.vertices.size() < 3) continue;
+    Vector3 sum(0, 0, 0);
+    for (Index v : loop.vertices) sum = sum + (t.mesh.vertices[v] - CGAL::ORIGIN);
+    const auto centre = static_cast<Index>(t.mesh.vertices.size());
+    t.mesh.vertices.push_back(CGAL::ORIGIN + sum / static_cast<double>(loop.vertices.size()));
+    for (std::size_t i = 0; i < loop.vertices.size(); ++i) {
+      t.mesh.triangles.push_back({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()], centre});
+      t.face_dot.push_back(-1.0);
+    }
+    ++filled;
+  }
+  return filled;
+}
+
+void compact_vertices(TaggedMesh& t) {
+  std::vector<Index> index(t.mesh.vertices.size(), std::numeric_limits<Index>::max());
+  std::vector<Point3> vertices;
+  for (auto& f : t.mesh.triangles) {
+    for (Index& v : f) {
+      if (index[v] == std::numeric_limits<Index>::max()) {
+        index[v] = static_cast<Index>(vertices.size());
+        vertices.push_back(t.mesh.vertices[v]);
+      }
+      v = index[v];
+    }
+  }
+  t.mesh.vertices = std::move(vertices);
+}
+
+}  // namespace envcrust::extract

@@ -1,0 +1,53 @@
+// The sheet as an indexed triangle mesh with a per-face tag, and its cleaning steps.
+#pragma once
+
+#include "envcrust/extract.h"
+
+#include "voronoi_sheet.h"
+
+#include <vector>
+
+namespace envcrust::extract {
+
+/// Triangle mesh whose faces remember u_p . u_q of the Delaunay edge they came from.
+struct TaggedMesh {
+  TriangleMesh mesh;
+  std::vector<double> face_dot;
+};
+
+/// Triangles: quads split along the shorter diagonal, larger polygons fanned around their
+/// centroid (a new vertex), so non-planar polygons stay close to the sheet.
+TaggedMesh triangulate_sheet(const RawSheet& sheet);
+
+/// Remove duplicate faces; at an edge with >= 3 faces keep the two from the most opposite
+/// Delaunay edges (smallest u_p . u_q). Returns the number of faces removed.
+std::size_t resolve_non_manifold_edges(TaggedMesh& tagged);
+
+/// Split every vertex whose faces form several fans: fans of fewer than 3 faces are dropped,
+/// each other fan gets its own copy moved 1% of its mean edge towards the fan's centroid (so
+/// that welding by position cannot pinch it again). Returns the number of copies made.
+std::size_t split_pinched_vertices(TaggedMesh& tagged);
+
+/// Keep the components whose median vertex distance to `surface_points` is below
+/// `max_distance` and whose area is at least `min_area_fraction` of the total. Returns the
+/// number of components dropped.
+std::size_t filter_components(TaggedMesh& tagged, const std::vector<Point3>& surface_points,
+                              double max_distance, double min_area_fraction);
+
+/// Fill boundary loops shorter than `max_length` with a fan around their centroid. Returns
+/// the number of loops filled.
+std::size_t fill_short_loops(TaggedMesh& tagged, double max_length);
+
+/// Drop unused vertices (indices remapped).
+void compact_vertices(TaggedMesh& tagged);
+
+}  // namespace envcrust::extract
+
+namespace envcrust::extract {
+
+/// Cut the mesh along the zero set of a per-vertex function (linear on each triangle) and
+/// keep the part where it is <= 0. Crossing edges get one new vertex each (shared by both
+/// faces); kept pieces of quads are split into two triangles. Returns the new vertices.
+std::vector<Index> trim_mesh(TaggedMesh& tagged, const std::vector<double>& level);
+
+}  // namespace envcrust::extract

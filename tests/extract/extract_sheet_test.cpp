@@ -1,0 +1,89 @@
+// The medial sheet of the envelope of exact samples reproduces each surface's topology and
+// geometry.
+#include "envcrust/analysis.h"
+#include "envcrust/extract.h"
+#include "envcrust/surfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace envcrust;
+
+namespace {
+
+struct Case {
+  std::string surface;
+  std::size_t points;
+};
+
+envelope::SurfaceSamples exact_samples(const surfaces::Surface& surface, std::size_t n) {
+  surfaces::SampleOptions o;
+  o.count = n;
+  o.with_normals = true;
+  const PointSet ps = surfaces::sample_surface(surface, o);
+  envelope::SurfaceSamples s{ps.points, ps.normals, {}};
+  s.boundary = surfaces::boundary_curves(surface, 0.005 * surfaces::bbox_diagonal(surface));
+  return s;
+}
+
+}  // namespace
+
+class SheetOfBuiltin : public ::testing::TestWithParam<Case> {};
+
+TEST_P(SheetOfBuiltin, has_the_surface_topology_and_stays_close) {
+  const auto surface = surfaces::make_builtin(GetParam().surface);
+  const auto samples = exact_samples(*surface, GetParam().points);
+  const auto env = envelope::sample_envelope(samples);
+  const auto sheet = extract::extract_sheet(env, samples);
+  analysis::Reference reference;
+  reference.mesh = surfaces::tessellate(*surface);
+  for (const auto& c : samples.boundary) reference.boundary.push_back(c.polyline());
+  analysis::AnalyzeOptions ao;
+  ao.distance.samples = 20000;
+  const auto report = analysis::analyze_mesh(sheet.mesh, reference, ao);
+  const auto expected = surface->expected_topology();
+  const auto& t = report.topology;
+  std::printf("%s: rho %.4f h %.4f env %zu | V %zu F %zu chi %ld loops %zu orient %d nm %zu/%zu | "
+              "H %.3f%% (m->r %.3f%%, r->m %.3f%%) | split %zu filled %zu dropped %zu nmf %zu proj %zu/%zu\n",
+              GetParam().surface.c_str(), env.rho, env.spacing, env.samples.size(), t.vertices, t.faces,
+              t.euler_characteristic, t.boundary_loops.size(), t.is_orientable, t.non_manifold_edges,
+              t.non_manifold_vertices, 100 * report.distance->relative(report.distance->hausdorff),
+              100 * report.distance->relative(report.distance->mesh_to_reference.max),
+              100 * report.distance->relative(report.distance->reference_to_mesh.max),
+              sheet.stats.vertices_split, sheet.stats.holes_filled, sheet.stats.components_dropped,
+              sheet.stats.non_manifold_faces_removed, sheet.stats.vertices_projected,
+              sheet.stats.projections_refused);
+  for (const auto& m : report.boundary_matches)
+    std::printf("   boundary %zu: %.3f%%\n", m.reference_loop, 100 * report.distance->relative(m.hausdorff));
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, expected.euler_characteristic);
+  EXPECT_EQ(static_cast<int>(t.boundary_loops.size()), expected.boundary_loops);
+  EXPECT_EQ(t.is_orientable, expected.is_orientable);
+  ASSERT_EQ(report.loops.size(), expected.boundary_knots.size());
+  for (std::size_t i = 0; i < report.loops.size(); ++i) {
+    ASSERT_TRUE(report.loops[i].knot.has_value());
+    EXPECT_EQ(knots::to_string(report.loops[i].knot->type), expected.boundary_knots[i]);
+  }
+  // Mesh to truth within 0.5% of the diagonal everywhere; truth to mesh too (these samples
+  // carry their exact boundary curves, so the boundary is not limited by the sampling).
+  EXPECT_LT(report.distance->relative(report.distance->mesh_to_reference.max), 0.005);
+  EXPECT_LT(report.distance->relative(report.distance->reference_to_mesh.max), 0.005);
+  for (const auto& m : report.boundary_matches) {
+    ASSERT_TRUE(m.mesh_loop.has_value());
+    EXPECT_LT(report.distance->relative(m.hausdorff), 0.01);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Surfaces, SheetOfBuiltin,
+    ::testing::Values(Case{"cylinder", 10000}, Case{"moebius", 10000}, Case{"trefoil-ribbon", 10000},
+                      Case{"hemisphere", 10000}, Case{"square", 10000}, Case{"sphere", 10000},
+                      Case{"torus", 10000}, Case{"unknot-ribbon", 10000}, Case{"paraboloid", 10000},
+                      Case{"saddle", 10000}, Case{"horn", 10000}, Case{"cylinder-nurbs", 10000}),
+    [](const auto& info) {
+      std::string name = info.param.surface;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
