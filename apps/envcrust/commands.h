@@ -7,5 +7,7 @@ namespace envcrust::cli {
 
 void register_sample(CLI::App& app);
 void register_analyze(CLI::App& app);
+void register_reconstruct(CLI::App& app);
+void register_envelope(CLI::App& app);
 
 }  // namespace envcrust::cli

@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "envcrust 0.1.0");
   envcrust::cli::register_sample(app);
   envcrust::cli::register_analyze(app);
+  envcrust::cli::register_reconstruct(app);
+  envcrust::cli::register_envelope(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,201 @@
+// `envcrust reconstruct` (the main job) and `envcrust envelope` (the envelope samples alone).
+#include "analysis_output.h"
+#include "cli_common.h"
+#include "commands.h"
+#include "inputs.h"
+#include "surface_input.h"
+
+#include "envcrust/errors.h"
+#include "envcrust/io.h"
+#include "envcrust/pipeline.h"
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace envcrust::cli {
+namespace {
+
+struct ReconstructCommand {
+  std::string input;
+  std::string output;
+  std::string rho = "auto";
+  std::string envelope_output;
+  std::string reference;
+  std::string report_file;
+  bool no_analysis = false;
+  BuiltinSampling sampling;
+  pipeline::ReconstructOptions options;
+  CommonFlags common;
+};
+
+std::optional<double> parse_rho(const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size() && value > 0) return value;
+  } catch (const std::exception&) {
+  }
+  throw UsageError("--rho must be 'auto' or a positive number (got '" + text + "')");
+}
+
+void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
+  sub.add_option("input", cmd.input, "builtin:NAME, or a point file with normals (.xyz 6 columns, .ply)")
+      ->required();
+  sub.add_option("--rho", cmd.rho, "Envelope radius: 'auto' (half the estimated reach) or a value")
+      ->capture_default_str();
+  sub.add_option("--spacing", cmd.options.envelope.spacing_rel_rho,
+                 "Envelope sample spacing as a fraction of rho")->capture_default_str();
+  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME inputs")->capture_default_str();
+  sub.add_option("--noise", cmd.sampling.noise_rel_diag,
+                 "Gaussian noise on builtin:NAME samples, fraction of the diagonal")->capture_default_str();
+  sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
+}
+
+nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
+  nlohmann::json j = {{"rho", e.rho}, {"spacing", e.spacing}, {"samples", e.samples.size()},
+                      {"candidates", e.candidates}, {"dropped_too_close", e.dropped_too_close},
+                      {"input_largest_gap", e.input_coverage}};
+  if (e.reach.pairs_examined > 0)
+    j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
+                  {"bottleneck", e.reach.bottleneck}};
+  return j;
+}
+
+void run_reconstruct(ReconstructCommand& cmd) {
+  cmd.options.envelope.rho = parse_rho(cmd.rho);
+  cmd.options.envelope.seed = cmd.sampling.seed;
+  const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
+  const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
+  const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
+  if (result.mesh.triangles.empty()) throw NumericalFailure("the reconstruction is empty");
+  io::write_mesh(cmd.output, result.mesh);
+  if (!cmd.envelope_output.empty()) {
+    PointSet env;
+    for (const auto& s : result.envelope.samples) {
+      env.points.push_back(s.position);
+      env.normals.push_back(s.direction);
+    }
+    io::write_points(cmd.envelope_output, env);
+  }
+  nlohmann::json j = {{"input", cmd.input}, {"output", cmd.output}, {"source", loaded.source},
+                      {"input_points", loaded.samples.points.size()},
+                      {"input_boundary_curves", loaded.samples.boundary.size()},
+                      {"notes", loaded.notes}};
+  j["method"] = cmd.options.method == pipeline::Method::Envelope ? "envelope" : "powercrust";
+  if (cmd.options.method == pipeline::Method::Envelope) {
+    j["extraction"] = cmd.options.extraction == pipeline::Extraction::Sheet ? "sheet" : "powershape";
+    j["envelope"] = envelope_json(result.envelope);
+  }
+  j["seconds"] = {{"envelope", result.seconds.envelope}, {"power_crust", result.seconds.power_crust},
+                  {"extraction", result.seconds.extraction}};
+  if (result.sheet_stats) {
+    const auto& s = *result.sheet_stats;
+    j["sheet"] = {{"delaunay_edges", s.delaunay_edges}, {"crossing_edges", s.crossing_edges},
+                  {"polygons", s.polygons}, {"components_dropped", s.components_dropped},
+                  {"non_manifold_faces_removed", s.non_manifold_faces_removed},
+                  {"vertices_split", s.vertices_split}, {"holes_filled", s.holes_filled},
+                  {"vertices_projected", s.vertices_projected},
+                  {"projections_refused", s.projections_refused}};
+  }
+  if (result.envelope_crust) {
+    const auto crust = topology::analyze_topology(*result.envelope_crust);
+    j["envelope_crust"] = {{"faces", crust.faces}, {"euler_characteristic", crust.euler_characteristic},
+                           {"is_closed", crust.is_closed()}, {"is_manifold", crust.is_manifold()}};
+  }
+  j["warnings"] = result.warnings;
+  std::optional<analysis::AnalysisReport> report;
+  if (!cmd.no_analysis) {
+    analysis::Reference reference;
+    if (!cmd.reference.empty()) {
+      reference = load_reference(cmd.reference);
+    } else if (is_builtin_spec(cmd.input)) {
+      reference = load_reference(cmd.input);
+    } else {
+      reference.points = loaded.samples.points;
+    }
+    report = analysis::analyze_mesh(result.mesh, reference);
+    j["analysis"] = analysis_json(*report);
+  }
+  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
+  if (cmd.common.json) {
+    print_json(j);
+    return;
+  }
+  if (cmd.common.quiet) return;
+  std::cout << "reconstructed " << cmd.input << " (" << loaded.samples.points.size() << " points) -> "
+            << cmd.output << "\n";
+  if (cmd.options.method == pipeline::Method::Envelope)
+    std::cout << "  envelope: rho " << result.envelope.rho << ", spacing " << result.envelope.spacing << ", "
+              << result.envelope.samples.size() << " samples\n";
+  std::cout << "  time: envelope " << result.seconds.envelope << " s, power crust " << result.seconds.power_crust
+            << " s, extraction " << result.seconds.extraction << " s\n";
+  for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
+  if (report) print_analysis(std::cout, cmd.output, *report);
+}
+
+
+void run_envelope(ReconstructCommand& cmd) {
+  cmd.options.envelope.rho = parse_rho(cmd.rho);
+  cmd.options.envelope.seed = cmd.sampling.seed;
+  const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
+  const auto env = envelope::sample_envelope(loaded.samples, cmd.options.envelope);
+  PointSet points;
+  for (const auto& s : env.samples) {
+    points.points.push_back(s.position);
+    points.normals.push_back(s.direction);
+  }
+  io::write_points(cmd.output, points);
+  nlohmann::json j = {{"input", cmd.input}, {"output", cmd.output}, {"envelope", envelope_json(env)},
+                      {"warnings", env.warnings}};
+  if (cmd.common.json) {
+    print_json(j);
+  } else if (!cmd.common.quiet) {
+    std::cout << "wrote " << env.samples.size() << " envelope samples (rho " << env.rho << ", spacing "
+              << env.spacing << ") to " << cmd.output << "\n";
+    for (const auto& w : env.warnings) std::cout << "  warning: " << w << "\n";
+  }
+}
+
+}  // namespace
+
+void register_reconstruct(CLI::App& app) {
+  auto cmd = std::make_shared<ReconstructCommand>();
+  CLI::App* sub = app.add_subcommand(
+      "reconstruct",
+      "Reconstruct a surface with boundary through its rho-envelope (the main job), then\n"
+      "report the result's topology, boundary knots and distances");
+  add_input_options(*sub, *cmd);
+  sub->add_option("-o,--output", cmd->output, "Output mesh (.ply/.off/.obj)")->required();
+  const std::map<std::string, pipeline::Method> methods = {{"envelope", pipeline::Method::Envelope},
+                                                           {"powercrust", pipeline::Method::PowerCrust}};
+  sub->add_option("--method", cmd->options.method, "envelope (default) or powercrust (direct, for comparison)")
+      ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+  const std::map<std::string, pipeline::Extraction> extractions = {
+      {"sheet", pipeline::Extraction::Sheet}, {"powershape", pipeline::Extraction::PowerShape}};
+  sub->add_option("--extract", cmd->options.extraction,
+                  "sheet (default: clean 2-manifold) or powershape (the paper's raw power shape)")
+      ->transform(CLI::CheckedTransformer(extractions, CLI::ignore_case));
+  sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
+  sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
+                "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
+  sub->add_option("-r,--reference", cmd->reference,
+                  "Reference for distances (default: the exact surface for builtin inputs, else the input points)");
+  sub->add_flag("--no-analysis", cmd->no_analysis, "Skip the analysis of the output");
+  sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
+  add_common_flags(*sub, cmd->common);
+  sub->callback([cmd] { run_reconstruct(*cmd); });
+}
+
+void register_envelope(CLI::App& app) {
+  auto cmd = std::make_shared<ReconstructCommand>();
+  CLI::App* sub = app.add_subcommand("envelope", "Write the samples of the rho-envelope of a surface");
+  add_input_options(*sub, *cmd);
+  sub->add_option("-o,--output", cmd->output, "Output point file (.xyz/.ply; normals = offset directions)")
+      ->required();
+  add_common_flags(*sub, cmd->common);
+  sub->callback([cmd] { run_envelope(*cmd); });
+}
+
+}  // namespace envcrust::cli

@@ -1,0 +1,29 @@
+// Turning a reconstruct/envelope INPUT argument into samples of M (points, normal lines,
+// boundary curves): a built-in surface, a point file, or a triangle mesh.
+#pragma once
+
+#include "envcrust/envelope.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace envcrust::cli {
+
+/// How builtin:NAME inputs are sampled.
+struct BuiltinSampling {
+  std::size_t count = 10000;
+  double noise_rel_diag = 0.0;
+  std::uint64_t seed = 1;
+};
+
+/// Samples of M and how they were obtained (for the report).
+struct LoadedSurface {
+  envelope::SurfaceSamples samples;
+  std::string source;                 ///< "builtin", "points", "mesh"
+  std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
+};
+
+LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling);
+
+}  // namespace envcrust::cli

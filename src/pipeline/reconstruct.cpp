@@ -1,0 +1,74 @@
+// reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
+#include "envcrust/pipeline.h"
+
+#include <chrono>
+
+namespace envcrust::pipeline {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
+  TriangleMesh mesh;
+  for (const auto& pole : result.poles) mesh.vertices.push_back(pole.center);
+  mesh.triangles = result.power_shape.triangles;
+  return mesh;
+}
+
+ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
+                              const ReconstructOptions& options, const Progress& progress) {
+  ReconstructResult out;
+  if (options.method == Method::PowerCrust) {
+    progress.report("power crust", 0.0);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto pc_options = options.power_crust;
+    pc_options.build_power_shape = false;
+    auto pc = powercrust::power_crust(samples.points, pc_options, progress);
+    out.seconds.power_crust = seconds_since(t0);
+    out.mesh = std::move(pc.crust);
+    out.power_crust_stats = pc.stats;
+    out.warnings = std::move(pc.warnings);
+    progress.report("power crust", 1.0);
+    return out;
+  }
+
+  progress.report("envelope", 0.0);
+  auto t0 = std::chrono::steady_clock::now();
+  out.envelope = envelope::sample_envelope(samples, options.envelope);
+  out.seconds.envelope = seconds_since(t0);
+  out.warnings = out.envelope.warnings;
+  progress.report("envelope", 1.0);
+
+  const bool need_crust =
+      options.extraction == Extraction::PowerShape || options.use_envelope_crust_check;
+  if (need_crust) {
+    progress.report("power crust of E", 0.0);
+    t0 = std::chrono::steady_clock::now();
+    auto pc_options = options.power_crust;
+    pc_options.build_power_shape = options.extraction == Extraction::PowerShape;
+    auto pc = powercrust::power_crust(out.envelope.points(), pc_options, progress);
+    out.seconds.power_crust = seconds_since(t0);
+    out.power_crust_stats = pc.stats;
+    for (auto& w : pc.warnings) out.warnings.push_back("power crust of the envelope: " + w);
+    if (options.extraction == Extraction::PowerShape) out.mesh = power_shape_mesh(pc);
+    out.envelope_crust = std::move(pc.crust);
+    progress.report("power crust of E", 1.0);
+  }
+  if (options.extraction == Extraction::Sheet) {
+    progress.report("medial sheet", 0.0);
+    t0 = std::chrono::steady_clock::now();
+    auto sheet = extract::extract_sheet(out.envelope, samples, options.sheet);
+    out.seconds.extraction = seconds_since(t0);
+    out.mesh = std::move(sheet.mesh);
+    out.sheet_stats = sheet.stats;
+    for (auto& w : sheet.warnings) out.warnings.push_back(std::move(w));
+    progress.report("medial sheet", 1.0);
+  }
+  return out;
+}
+
+}  // namespace envcrust::pipeline
