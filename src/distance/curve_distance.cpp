@@ -1,6 +1,10 @@
 // Hausdorff distance between closed polylines (boundary loop matching).
 #include "envcrust/distance.h"
 
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -27,17 +31,25 @@ std::vector<Point3> densify(const Polyline& c, double step) {
   return out;
 }
 
+using Segment = Kernel::Segment_3;
+using SegmentPrimitive = CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator>;
+using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, SegmentPrimitive>>;
+
 double directed(const std::vector<Point3>& points, const Polyline& target) {
-  double worst = 0.0;
-  for (const Point3& p : points) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < target.size(); ++i) {
-      const Kernel::Segment_3 s(target[i], target[(i + 1) % target.size()]);
-      best = std::min(best, s.is_degenerate() ? CGAL::squared_distance(p, s.source())
-                                              : CGAL::squared_distance(p, s));
-    }
-    worst = std::max(worst, best);
+  std::vector<Segment> segments;
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    const Segment s(target[i], target[(i + 1) % target.size()]);
+    if (!s.is_degenerate()) segments.push_back(s);
   }
+  if (segments.empty()) {  // all points of the target coincide
+    double worst = 0.0;
+    for (const Point3& p : points) worst = std::max(worst, CGAL::squared_distance(p, target.front()));
+    return std::sqrt(worst);
+  }
+  SegmentTree tree(segments.begin(), segments.end());
+  tree.accelerate_distance_queries();
+  double worst = 0.0;
+  for (const Point3& p : points) worst = std::max(worst, tree.squared_distance(p));
   return std::sqrt(worst);
 }
 
