@@ -148,3 +148,75 @@ TEST_F(CliTest, garbage_mesh_is_an_error_not_a_crash) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err.rfind("envcrust: error: " + path("bad.off"), 0), 0u) << r.err;
 }
+
+TEST_F(CliTest, reconstruct_keeps_the_open_cylinder_open) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -n 5000 -o " + path("c.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 2);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_EQ(a["is_orientable"], true);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+  EXPECT_GT(j["envelope"]["rho"].get<double>(), 0.0);
+  // The written file holds the same surface.
+  const auto again = run_envcrust("analyze " + path("c.ply") + " --json");
+  EXPECT_EQ(nlohmann::json::parse(again.out)["boundary_loops"], 2);
+}
+
+TEST_F(CliTest, reconstruct_moebius_is_non_orientable_with_one_boundary) {
+  const auto r = run_envcrust("reconstruct builtin:moebius -n 5000 -o " + path("m.off") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = nlohmann::json::parse(r.out)["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_EQ(a["is_orientable"], false);
+  EXPECT_EQ(a["is_manifold"], true);
+}
+
+TEST_F(CliTest, direct_power_crust_closes_the_open_cylinder) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -n 2000 --method powercrust -o " + path("pc.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = nlohmann::json::parse(r.out)["analysis"];
+  EXPECT_EQ(a["boundary_loops"], 0);
+  EXPECT_EQ(a["is_closed"], true);
+  // The caps it adds lie far from the open cylinder.
+  EXPECT_GT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>() +
+                a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.1);
+}
+
+TEST_F(CliTest, envelope_writes_samples_with_offset_directions) {
+  const auto r = run_envcrust("envelope builtin:hemisphere -n 3000 --rho 0.1 -o " + path("e.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["envelope"]["rho"].get<double>(), 0.1);
+  const auto points = envcrust::io::read_points(path("e.ply"));
+  EXPECT_EQ(points.size(), j["envelope"]["samples"].get<std::size_t>());
+  ASSERT_TRUE(points.has_normals());
+  for (std::size_t i = 0; i < points.size(); i += 17) {
+    // Offset directions are unit and the hemisphere's envelope lies at distance 0.1 from it:
+    // sheet points at radius 0.9 or 1.1, rim points 0.1 from the rim circle.
+    EXPECT_NEAR(std::sqrt(points.normals[i].squared_length()), 1.0, 1e-9);
+    const auto& p = points.points[i];
+    const double r = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z());
+    const double to_rim = std::hypot(std::hypot(p.x(), p.y()) - 1.0, p.z());
+    const double d = p.z() >= 0 ? std::abs(r - 1.0) : to_rim;
+    EXPECT_NEAR(d, 0.1, 0.01);
+  }
+}
+
+TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder --rho -2 -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "envcrust: usage error: --rho must be 'auto' or a positive number (got '-2')\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
+TEST_F(CliTest, reconstruct_warns_when_rho_exceeds_the_reach) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -n 3000 --rho 1.5 --no-analysis -o " + path("x.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto warnings = nlohmann::json::parse(r.out)["warnings"];
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_EQ(warnings[0].get<std::string>().rfind("rho 1.5 may be too large:", 0), 0u);
+}
