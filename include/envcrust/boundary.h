@@ -1,0 +1,111 @@
+// Boundary curves of a surface: detected in a point cloud with normal lines (angle-gap test,
+// linking, ordering, frames; METHOD.md section 3.3c-d), or read off a triangle mesh (section 1).
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envcrust::boundary {
+
+/// Options of detect_boundary. Distances are in units of the average spacing s of the cloud
+/// (normals::average_spacing, k 6) unless a field says otherwise.
+struct BoundaryOptions {
+  /// Neighbours of the angle-gap test, >= 8. 32: at 10k random points k 16 flags ~9% of the
+  /// interior (random voids), k 32 ~0.1% while still finding most boundary points (METHOD §5).
+  int neighbors = 32;
+  /// A point is a boundary candidate if the largest circular gap between the polar angles of
+  /// its neighbours (projected on the tangent plane) exceeds this, degrees in (0, 360).
+  /// 110: a boundary point's gap is ~180, random interior voids rarely reach 110 with k 32.
+  double gap_threshold_deg = 110.0;
+  /// Hysteresis: candidates with a gap above this (degrees, in (0, gap_threshold_deg]) are
+  /// kept when linked (link_distance, consistent conormals) to a chain reaching a candidate
+  /// above gap_threshold_deg. Densifies the boundary band without admitting isolated voids.
+  double weak_gap_threshold_deg = 90.0;
+  /// The two conormal estimates (neighbour centroid, gap bisector) may differ by at most this
+  /// many degrees, in (0, 180]; else the candidate is unreliable and dropped. 60 per METHOD.
+  double conormal_agreement_deg = 60.0;
+  /// Keep a candidate only if, within `support_radius`, other candidates with a consistent
+  /// conormal (c_i . c_j > link_min_conormal_dot) exist on both sides along the tangent
+  /// t = n x c. Off: measured at 10k points it removes few interior points (false positives are
+  /// already ~0.03% with hysteresis) but cuts the sparse boundary chains into pieces (cylinder
+  /// 5 loops instead of 2, trefoil ribbon 26 instead of 2).
+  bool require_two_sided_support = false;
+  /// Radius of the support test, in s, > 0. 3: a few neighbours along a boundary at any N.
+  double support_radius = 3.0;
+  /// Candidates closer than this (in s, > 0) with consistent conormals are linked into one
+  /// curve. 5: METHOD's 2.5 assumed s = nearest-neighbour distance; with CGAL's s the flagged
+  /// band has random gaps beyond 2.5 s (10k points: cylinder 12 pieces at 2.5, 2 loops at 4;
+  /// 50k points: saddle, Moebius, unknot ribbon still cut once at 4, whole at 5 and 6).
+  double link_distance = 5.0;
+  /// Linked candidates need c_i . c_j above this, in [-1, 1). 0.5 (60 degrees) separates the
+  /// two edges of a thin strip and still follows a 90-degree corner through its diagonal.
+  double link_min_conormal_dot = 0.5;
+  /// A component's ordered path is closed if its ends are within this (in s, > 0); farther
+  /// ends are joined anyway (the boundary of a surface is closed) with a warning. 5: the ends
+  /// of a whole loop's path are up to a link length apart (measured 3.5-4.7 s at 50k points).
+  double close_distance = 5.0;
+  /// Half-width of the moving average applied to the curve resampled at spacing s, >= 0
+  /// vertices. 3 per METHOD: removes the band's zig-zag, shrinks a radius-R arc by ~(3s)^2/R.
+  int smoothing_half_window = 3;
+  /// Components whose ordered centreline (without the closing segment) is shorter than this
+  /// (in s, >= 0) are dropped and counted (scan holes, interior voids). 20: at 50k points
+  /// chains of false candidates around voids reach 10 s (sphere: 4 false loops at 10 s); a
+  /// hole of circumference < 20 s is also below the envelope's resolution (rho ~ 4.5 s fills
+  /// holes shorter than 2 pi rho, METHOD section 5).
+  double min_loop_length = 20.0;
+  /// Output curve vertex spacing (arc length, absolute units, > 0); nullopt: spacing s.
+  std::optional<double> curve_spacing;
+  /// Move the output curves by this many s along their outward conormal, in [-5, 5]. The
+  /// detected band lies inside the true boundary (samples never reach it exactly); 0 keeps
+  /// the fitted curve where the samples are (see the measured offsets in the tests).
+  double outward_offset = 0.0;
+};
+
+/// Result of detect_boundary.
+struct BoundaryDetection {
+  /// Per input point: the point belongs to one of the returned curves' samples (a candidate
+  /// that passed the support test and lies in a kept, not dropped, component).
+  std::vector<bool> is_boundary_point;
+  /// Per input point: the unit outward conormal estimated at a boundary point, else (0,0,0).
+  std::vector<Vector3> conormals;
+  /// The boundary loops, each closed, resampled at the output spacing, with t, n, c frames.
+  std::vector<BoundaryCurve> curves;
+  /// Linked components shorter than min_loop_length (scan holes, interior false positives).
+  std::size_t dropped_loops = 0;
+  /// Human-readable notes (curves closed across a gap, inconsistent conormals, ...).
+  std::vector<std::string> warnings;
+  /// The average spacing s of the cloud (k 6), the unit of the options.
+  double spacing = 0.0;
+};
+
+/// Detect the boundary of the surface sampled by `points` with unit normal lines (one per
+/// point, sign ignored). Deterministic and independent of the thread count.
+/// @throws InvalidOptions naming the field and value; InvalidInput on a size mismatch, a
+/// non-finite coordinate or a zero normal; DegenerateInput with fewer points than
+/// `neighbors` + 1.
+BoundaryDetection detect_boundary(const std::vector<Point3>& points,
+                                  const std::vector<Vector3>& normal_lines,
+                                  const BoundaryOptions& options = {});
+
+/// The boundary loops of a triangle mesh (edges with exactly one face), in the order of their
+/// first edge in the face list. Per vertex: t along the loop, n = the vertex normal line made
+/// perpendicular to t (signs propagated continuously along the loop), c = +-t x n pointing away
+/// from the boundary face's third vertex. Where the loop turns by more than 30 degrees the
+/// vertex is a corner: t and c belong to the arriving edge, conormal_next to the leaving one.
+/// @throws InvalidInput on a bad vertex index, a normal list of the wrong size, or a
+/// non-edge-manifold mesh ("edge (12, 40) has 3 faces: the mesh is not a surface").
+std::vector<BoundaryCurve> mesh_boundary_curves(const TriangleMesh& mesh,
+                                                const std::vector<Vector3>& vertex_normal_lines);
+
+/// The curve resampled so that consecutive vertices are at most `max_spacing` apart (arc
+/// length along the polyline), equally spaced between corners; corners are kept as vertices
+/// with their frames; t, n, c are interpolated between the old vertices and re-orthonormalised
+/// (n aligned in sign with the previous vertex first). @throws InvalidOptions if max_spacing
+/// is not > 0; InvalidInput on a curve with fewer than 2 vertices.
+BoundaryCurve resample_curve(const BoundaryCurve& curve, double max_spacing);
+
+}  // namespace envcrust::boundary

@@ -1,0 +1,90 @@
+// Internal steps of boundary detection and curve building, shared by the module's sources.
+#pragma once
+
+#include "envcrust/boundary.h"
+
+#include "knn.h"
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace envcrust::boundary::detail {
+
+inline double dot(const Vector3& a, const Vector3& b) { return CGAL::scalar_product(a, b); }
+inline Vector3 cross(const Vector3& a, const Vector3& b) { return CGAL::cross_product(a, b); }
+inline double length(const Vector3& v) { return std::sqrt(v.squared_length()); }
+/// v / |v|, or (0,0,0) for a zero vector.
+inline Vector3 unit(const Vector3& v) {
+  const double l = length(v);
+  return l > 0 ? v / l : Vector3(0, 0, 0);
+}
+/// The part of v perpendicular to the unit vector u, normalised (zero if v is parallel to u).
+inline Vector3 unit_perpendicular(const Vector3& v, const Vector3& u) {
+  return unit(v - dot(v, u) * u);
+}
+std::string format_number(double value);
+
+/// Result of the per-point angle-gap test.
+struct Candidates {
+  std::vector<char> flagged;        ///< per point: gap > weak threshold, conormals agree
+  std::vector<char> strong;         ///< per point: flagged and gap > (strong) threshold
+  std::vector<Vector3> conormals;   ///< per point: unit outward conormal if flagged
+  std::size_t unreliable = 0;       ///< large gap but the two conormal estimates disagree
+};
+
+/// Angle-gap test on the `neighbors` nearest points of each point (angle_gap.cpp).
+Candidates angle_gap_candidates(const std::vector<Point3>& points,
+                                const std::vector<Vector3>& normals, const PointIndex& index,
+                                const BoundaryOptions& options);
+
+/// Hysteresis: keep strong candidates and the weak ones reachable from a strong one through
+/// links shorter than `radius` between candidates with c_i . c_j > min_dot; unflag the rest
+/// (support_filter.cpp). Returns the number unflagged.
+std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidates& candidates,
+                                     double radius, double min_dot);
+
+/// Unflag candidates without consistent flagged neighbours on both sides along their tangent
+/// within `radius` (support_filter.cpp). Returns the number unflagged.
+std::size_t filter_two_sided_support(const std::vector<Point3>& points,
+                                     const std::vector<Vector3>& normals, Candidates& candidates,
+                                     double radius, double min_dot);
+
+/// Connected components of flagged points linked within `radius` with c_i . c_j > min_dot,
+/// each sorted by index, components ordered by their smallest index (curve_linking.cpp).
+std::vector<std::vector<std::size_t>> link_candidates(const std::vector<Point3>& points,
+                                                      const Candidates& candidates,
+                                                      double radius, double min_dot);
+
+/// An ordered centreline through one component.
+struct Centreline {
+  Polyline points;         ///< ordered positions (bin averages of the component's points)
+  double end_gap = 0.0;    ///< distance between the ends of the ordered diameter path
+  double length = 0.0;     ///< length of the closed centreline
+  double open_length = 0.0;  ///< its length without the closing segment (last to first)
+};
+
+/// Order a component along the diameter path of its linking-graph MST, then replace the path
+/// by averages of all component points binned by their arc-length position (curve_linking.cpp).
+Centreline order_component(const std::vector<Point3>& points,
+                           const std::vector<std::size_t>& component, double link_radius,
+                           double bin_width);
+
+/// Closed polyline resampled at equal arc length with ceil(L / spacing) vertices
+/// (curve_frames.cpp).
+Polyline resample_closed(const Polyline& curve, double spacing);
+
+/// Cyclic moving average over 2 h + 1 vertices.
+Polyline smooth_closed(const Polyline& curve, int half_window);
+
+/// Frames of a closed curve from the cloud: t by central differences, n = average of the
+/// nearest points' normal lines made perpendicular to t (sign propagated along the curve),
+/// c = +-t x n with the sign voted by the nearest flagged points' conormals. Appends a
+/// warning if the vote is not clear.
+BoundaryCurve frame_curve(const Polyline& curve, const std::vector<Point3>& points,
+                          const std::vector<Vector3>& normals, const PointIndex& index,
+                          const Candidates& candidates, const std::vector<std::size_t>& component,
+                          std::size_t curve_id, std::vector<std::string>& warnings);
+
+}  // namespace envcrust::boundary::detail

@@ -1,0 +1,142 @@
+// detect_boundary: option checks, then angle-gap candidates, support filter, linking,
+// ordering, smoothing, resampling and frames of each boundary loop of a point cloud.
+#include "boundary_detail.h"
+
+#include "envcrust/errors.h"
+#include "envcrust/normals.h"
+
+#include <sstream>
+
+namespace envcrust::boundary {
+namespace detail {
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::format_number;
+
+void require(bool ok, const std::string& field, double value, const std::string& range) {
+  if (!ok) {
+    throw InvalidOptions("boundary detection: " + field + " must be " + range + " (got " +
+                         format_number(value) + ")");
+  }
+}
+
+void validate(const BoundaryOptions& o) {
+  require(o.neighbors >= 8, "neighbors", o.neighbors, ">= 8");
+  require(o.gap_threshold_deg > 0 && o.gap_threshold_deg < 360, "gap_threshold_deg",
+          o.gap_threshold_deg, "in (0, 360)");
+  require(o.weak_gap_threshold_deg > 0 && o.weak_gap_threshold_deg <= o.gap_threshold_deg,
+          "weak_gap_threshold_deg", o.weak_gap_threshold_deg, "in (0, gap_threshold_deg]");
+  require(o.conormal_agreement_deg > 0 && o.conormal_agreement_deg <= 180,
+          "conormal_agreement_deg", o.conormal_agreement_deg, "in (0, 180]");
+  require(o.support_radius > 0 && std::isfinite(o.support_radius), "support_radius",
+          o.support_radius, "> 0");
+  require(o.link_distance > 0 && std::isfinite(o.link_distance), "link_distance",
+          o.link_distance, "> 0");
+  require(o.link_min_conormal_dot >= -1 && o.link_min_conormal_dot < 1, "link_min_conormal_dot",
+          o.link_min_conormal_dot, "in [-1, 1)");
+  require(o.close_distance > 0 && std::isfinite(o.close_distance), "close_distance",
+          o.close_distance, "> 0");
+  require(o.smoothing_half_window >= 0, "smoothing_half_window", o.smoothing_half_window, ">= 0");
+  require(o.min_loop_length >= 0 && std::isfinite(o.min_loop_length), "min_loop_length",
+          o.min_loop_length, ">= 0");
+  if (o.curve_spacing) {
+    require(*o.curve_spacing > 0 && std::isfinite(*o.curve_spacing), "curve_spacing",
+            *o.curve_spacing, "> 0");
+  }
+  require(o.outward_offset >= -5 && o.outward_offset <= 5, "outward_offset", o.outward_offset,
+          "in [-5, 5]");
+}
+
+std::vector<Vector3> unit_normals(const std::vector<Point3>& points,
+                                  const std::vector<Vector3>& normal_lines) {
+  if (normal_lines.size() != points.size()) {
+    throw InvalidInput("boundary detection: " + std::to_string(normal_lines.size()) +
+                       " normal lines for " + std::to_string(points.size()) + " points");
+  }
+  std::vector<Vector3> out;
+  out.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point3& p = points[i];
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
+      throw InvalidInput("point " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    const double len = detail::length(normal_lines[i]);
+    if (!(len > 0) || !std::isfinite(len)) {
+      throw InvalidInput("normal line " + std::to_string(i) + " is zero or not finite");
+    }
+    out.push_back(normal_lines[i] / len);
+  }
+  return out;
+}
+
+}  // namespace
+
+BoundaryDetection detect_boundary(const std::vector<Point3>& points,
+                                  const std::vector<Vector3>& normal_lines,
+                                  const BoundaryOptions& options) {
+  validate(options);
+  const std::vector<Vector3> normals = unit_normals(points, normal_lines);
+  if (points.size() < static_cast<std::size_t>(options.neighbors) + 1) {
+    throw DegenerateInput("boundary detection needs at least neighbors + 1 = " +
+                          std::to_string(options.neighbors + 1) + " points (got " +
+                          std::to_string(points.size()) + ")");
+  }
+  BoundaryDetection out;
+  out.spacing = normals::average_spacing(points, 6);
+  const double s = out.spacing;
+  const double output_spacing = options.curve_spacing.value_or(s);
+  const detail::PointIndex index(points);
+
+  detail::Candidates candidates = detail::angle_gap_candidates(points, normals, index, options);
+  detail::keep_connected_to_strong(points, candidates, options.link_distance * s,
+                                   options.link_min_conormal_dot);
+  if (options.require_two_sided_support) {
+    detail::filter_two_sided_support(points, normals, candidates, options.support_radius * s,
+                                     options.link_min_conormal_dot);
+  }
+  const auto components = detail::link_candidates(points, candidates, options.link_distance * s,
+                                                  options.link_min_conormal_dot);
+  out.is_boundary_point.assign(points.size(), false);
+  out.conormals.assign(points.size(), Vector3(0, 0, 0));
+  for (const auto& component : components) {
+    const detail::Centreline line =
+        detail::order_component(points, component, options.link_distance * s, s);
+    if (line.points.size() < 3 || line.open_length < options.min_loop_length * s) {
+      ++out.dropped_loops;
+      continue;
+    }
+    const std::size_t id = out.curves.size();
+    if (line.end_gap > options.close_distance * s) {
+      out.warnings.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
+                             format_number(line.end_gap / s) +
+                             " spacings apart; closed across the gap");
+    }
+    Polyline curve = detail::resample_closed(line.points, s);
+    curve = detail::smooth_closed(curve, options.smoothing_half_window);
+    curve = detail::resample_closed(curve, output_spacing);
+    BoundaryCurve framed = detail::frame_curve(curve, points, normals, index, candidates,
+                                               component, id, out.warnings);
+    if (options.outward_offset != 0) {
+      for (BoundaryVertex& v : framed.vertices) {
+        v.position = v.position + options.outward_offset * s * v.conormal;
+      }
+    }
+    out.curves.push_back(std::move(framed));
+    for (const std::size_t i : component) {
+      out.is_boundary_point[i] = true;
+      out.conormals[i] = candidates.conormals[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace envcrust::boundary

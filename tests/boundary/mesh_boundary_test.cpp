@@ -1,0 +1,2 @@
+// Tests of mesh_boundary_curves.
+#include <gtest/gtest.h>

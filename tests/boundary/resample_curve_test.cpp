@@ -1,0 +1,2 @@
+// Tests of resample_curve.
+#include <gtest/gtest.h>
