@@ -9,5 +9,6 @@ void register_sample(CLI::App& app);
 void register_analyze(CLI::App& app);
 void register_reconstruct(CLI::App& app);
 void register_envelope(CLI::App& app);
+void register_powercrust(CLI::App& app);
 
 }  // namespace envcrust::cli

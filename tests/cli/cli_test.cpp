@@ -220,3 +220,29 @@ TEST_F(CliTest, reconstruct_warns_when_rho_exceeds_the_reach) {
   ASSERT_FALSE(warnings.empty());
   EXPECT_EQ(warnings[0].get<std::string>().rfind("rho 1.5 may be too large:", 0), 0u);
 }
+
+TEST_F(CliTest, powercrust_of_a_torus_sample_is_a_closed_torus) {
+  const auto r = run_envcrust("powercrust builtin:torus -n 4000 -o " + path("t.ply") + " --medial-axis " +
+                              path("ma.ply") + " --poles " + path("poles.txt") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["crust"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["crust"]["is_closed"], true);
+  EXPECT_EQ(j["crust"]["is_manifold"], true);
+  EXPECT_GT(j["inner_poles"].get<int>(), 0);
+  EXPECT_TRUE(fs::exists(path("ma.ply")));
+  // One line per pole after the header.
+  const auto poles = envcrust::testing::slurp(path("poles.txt"));
+  EXPECT_EQ(static_cast<std::size_t>(std::count(poles.begin(), poles.end(), '\n')), j["poles"].get<std::size_t>() + 1);
+}
+
+TEST_F(CliTest, powercrust_refuses_coplanar_points) {
+  {
+    std::ofstream f(path("flat.xyz"));
+    for (int i = 0; i < 10; ++i) f << i << " " << (i * i) % 7 << " 0\n";
+  }
+  const auto r = run_envcrust("powercrust " + path("flat.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: all 10 points are coplanar: nothing to reconstruct\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}

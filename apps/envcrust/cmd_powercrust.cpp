@@ -1,0 +1,121 @@
+// `envcrust powercrust`: the Power Crust of a point set, with its medial axis and poles.
+#include "cli_common.h"
+#include "commands.h"
+#include "inputs.h"
+#include "surface_input.h"
+
+#include "envcrust/io.h"
+#include "envcrust/pipeline.h"
+#include "envcrust/power_crust.h"
+#include "envcrust/topology.h"
+
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace envcrust::cli {
+namespace {
+
+struct PowerCrustCommand {
+  std::string input;
+  std::string output;
+  std::string medial_axis_output;
+  std::string poles_output;
+  BuiltinSampling sampling;
+  powercrust::PowerCrustOptions options;
+  bool keep_unknown = false;
+  CommonFlags common;
+};
+
+std::vector<Point3> load_points(const PowerCrustCommand& cmd) {
+  if (is_builtin_spec(cmd.input)) return load_surface(cmd.input, cmd.sampling).samples.points;
+  return io::read_points(cmd.input).points;
+}
+
+std::string label_name(powercrust::PoleLabel label) {
+  switch (label) {
+    case powercrust::PoleLabel::In: return "in";
+    case powercrust::PoleLabel::Out: return "out";
+    default: return "unknown";
+  }
+}
+
+void run_powercrust(PowerCrustCommand& cmd) {
+  cmd.options.resolve_unknown = !cmd.keep_unknown;
+  cmd.options.build_power_shape = !cmd.medial_axis_output.empty();
+  const auto points = load_points(cmd);
+  const auto result = powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
+  io::write_mesh(cmd.output, result.crust);
+  if (!cmd.medial_axis_output.empty()) io::write_mesh(cmd.medial_axis_output, pipeline::power_shape_mesh(result));
+  if (!cmd.poles_output.empty()) {
+    // One pole per line: position, polar-ball radius, label (in/out/unknown).
+    std::ostringstream text;
+    text.precision(17);
+    text << "# x y z radius label\n";
+    for (const auto& pole : result.poles)
+      text << pole.center.x() << ' ' << pole.center.y() << ' ' << pole.center.z() << ' ' << pole.radius << ' '
+           << label_name(pole.label) << '\n';
+    io::write_text(cmd.poles_output, text.str());
+  }
+  const auto& s = result.stats;
+  const auto crust = topology::analyze_topology(result.crust);
+  nlohmann::json j = {
+      {"input", cmd.input}, {"output", cmd.output}, {"input_points", s.input_points},
+      {"duplicate_points", s.duplicate_points}, {"delaunay_cells", s.delaunay_cells}, {"poles", s.poles},
+      {"inner_poles", s.inner_poles}, {"outer_poles", s.outer_poles}, {"unknown_poles", s.unknown_poles},
+      {"resolved_unknown_poles", s.resolved_unknown_poles}, {"hidden_poles", s.hidden_poles},
+      {"crust_faces", s.crust_faces},
+      {"crust", {{"euler_characteristic", crust.euler_characteristic}, {"is_closed", crust.is_closed()},
+                 {"is_manifold", crust.is_manifold()}, {"components", crust.components.size()},
+                 {"misoriented_edges", crust.misoriented_edges}}},
+      {"seconds", {{"delaunay", s.seconds_delaunay}, {"poles", s.seconds_poles},
+                   {"power_diagram", s.seconds_power_diagram}, {"labeling", s.seconds_labeling},
+                   {"crust", s.seconds_crust}, {"power_shape", s.seconds_power_shape}}},
+      {"warnings", result.warnings}};
+  if (cmd.common.json) {
+    print_json(j);
+    return;
+  }
+  if (cmd.common.quiet) return;
+  std::cout << "power crust of " << cmd.input << ": " << s.input_points << " points (" << s.duplicate_points
+            << " duplicates merged), " << s.poles << " poles (" << s.inner_poles << " in, " << s.outer_poles
+            << " out, " << s.unknown_poles << " unknown), " << s.crust_faces << " crust triangles\n"
+            << "  crust: chi " << crust.euler_characteristic << ", " << (crust.is_closed() ? "closed" : "open")
+            << ", " << (crust.is_manifold() ? "manifold" : "non-manifold") << "\n"
+            << "  seconds: delaunay " << s.seconds_delaunay << ", poles " << s.seconds_poles << ", power diagram "
+            << s.seconds_power_diagram << ", labeling " << s.seconds_labeling << ", crust " << s.seconds_crust
+            << "\n";
+  for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
+}
+
+}  // namespace
+
+void register_powercrust(CLI::App& app) {
+  auto cmd = std::make_shared<PowerCrustCommand>();
+  CLI::App* sub = app.add_subcommand("powercrust", "Run the Power Crust on a point set (closed surfaces)");
+  sub->add_option("input", cmd->input, "Point file (.xyz/.pts/.txt/.ply, or a mesh's vertices) or builtin:NAME")
+      ->required();
+  sub->add_option("-o,--output", cmd->output, "Crust mesh (.ply/.off/.obj)")->required();
+  sub->add_option("--medial-axis", cmd->medial_axis_output, "Write the inner power shape's triangles as a mesh");
+  sub->add_option("--poles", cmd->poles_output, "Write the poles (x y z radius label) as text");
+  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME inputs")->capture_default_str();
+  sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();
+  const std::map<std::string, powercrust::LabelPreset> presets = {{"code", powercrust::LabelPreset::Code},
+                                                                  {"readme", powercrust::LabelPreset::Readme}};
+  sub->add_option("--preset", cmd->options.preset,
+                  "Labeling thresholds: 'code' (0/0, what the original program runs) or 'readme' (0.4/0.3)")
+      ->transform(CLI::CheckedTransformer(presets, CLI::ignore_case));
+  sub->add_option("--neighbor-threshold", cmd->options.neighbor_threshold,
+                  "Neighbour-rule threshold on the ball intersection angle (original -t), overrides the preset");
+  sub->add_option("--second-pass-threshold", cmd->options.second_pass_threshold,
+                  "Second-pass threshold (original -w), overrides the preset");
+  sub->add_option("--box-scale", cmd->options.bounding_box_scale,
+                  "Half-width of the bounding cube in largest extents of the input")->capture_default_str();
+  sub->add_flag("--keep-unknown", cmd->keep_unknown,
+                "Leave poles the labeling could not decide unlabeled, as the original does (may open the crust)");
+  add_common_flags(*sub, cmd->common);
+  sub->callback([cmd] { run_powercrust(*cmd); });
+}
+
+}  // namespace envcrust::cli
