@@ -46,6 +46,9 @@ struct PowerCrustOptions {
   /// Keep every finite Delaunay cell with its Voronoi vertex in PowerCrustResult (costs
   /// memory: about 6.5 cells per sample).
   bool keep_delaunay_cells = false;
+  /// Point count from which the triangulations are built by parallel insertion (a lock grid
+  /// costs more than it gains on small inputs). The result is the same either way.
+  std::size_t parallel_insertion_from = 200000;
 };
 
 /// One pole: a Voronoi vertex of the samples (a Delaunay cell's circumcentre) chosen as p+ or

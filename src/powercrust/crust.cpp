@@ -9,46 +9,42 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
-#include <tuple>
 
 namespace envcrust::powercrust {
 namespace {
 
 using RtCell = Regular::Cell_handle;
 
+// A crust vertex is a power vertex, named by its cell's sorted pole ids: faces share it by
+// name, so rounding never merges two cells whose vertices nearly coincide.
+using CellKey = std::array<Index, 4>;
+
+struct Corner {
+  CellKey key;
+  Point3 point;
+};
+
 // Polygons found by one thread, flattened.
 struct PolygonChunk {
   std::vector<std::array<Index, 2>> edges;  ///< {In pole, Out pole}
   std::vector<std::size_t> starts;          ///< into corners; one past the last polygon at the end
-  std::vector<Point3> corners;
+  std::vector<Corner> corners;
   std::size_t unbounded = 0;
 };
 
-bool less_xyz(const Point3& a, const Point3& b) {
-  return std::make_tuple(a.x(), a.y(), a.z()) < std::make_tuple(b.x(), b.y(), b.z());
-}
-
-// Weighted circumcentre from the vertices in id order, so its bits do not depend on the cell's
-// vertex order.
-Point3 power_vertex(RtCell c) {
+// The weighted circumcentre computed from the vertices in id order, so its bits do not
+// depend on the cell's vertex order.
+Corner corner_of(RtCell c) {
   std::array<RtVertex, 4> v{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
   std::sort(v.begin(), v.end(), [](RtVertex a, RtVertex b) { return a->info() < b->info(); });
-  return powercrust::power_vertex(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point());
-}
-
-// Drop cyclic repeats and start at the smallest corner (so the fan does not depend on where
-// the circulation started). Returns false when fewer than 3 distinct corners remain.
-bool normalise_polygon(std::vector<Point3>& corners) {
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  while (corners.size() > 1 && corners.front() == corners.back()) corners.pop_back();
-  if (corners.size() < 3) return false;
-  std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end(), less_xyz), corners.end());
-  return true;
+  return {{v[0]->info(), v[1]->info(), v[2]->info(), v[3]->info()},
+          power_vertex(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point())};
 }
 
 void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& poles, Index p,
-                      PolygonChunk& chunk, std::vector<RtCell>& cells, std::vector<Point3>& corners) {
+                      PolygonChunk& chunk, std::vector<RtCell>& cells, std::vector<Corner>& corners) {
   const Regular& rt = *diagram.rt;
   const RtVertex v = diagram.vertex_of_pole[p];
   cells.clear();
@@ -79,13 +75,17 @@ void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& pole
         bounded = false;
         break;
       }
-      corners.push_back(power_vertex(circulator));
+      corners.push_back(corner_of(circulator));
     } while (++circulator != done);
     if (!bounded) {
       ++chunk.unbounded;
       continue;
     }
-    if (!normalise_polygon(corners)) continue;
+    // Start at the smallest key: the fan then does not depend on where the circulation began.
+    std::rotate(corners.begin(),
+                std::min_element(corners.begin(), corners.end(),
+                                 [](const Corner& a, const Corner& b) { return a.key < b.key; }),
+                corners.end());
     chunk.edges.push_back({p, q});
     chunk.starts.push_back(chunk.corners.size());
     chunk.corners.insert(chunk.corners.end(), corners.begin(), corners.end());
@@ -151,7 +151,7 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
     if (poles[p].label == PoleLabel::In && !poles[p].is_hidden) inner.push_back(static_cast<Index>(p));
 
   tbb::enumerable_thread_specific<PolygonChunk> chunks;
-  tbb::enumerable_thread_specific<std::pair<std::vector<RtCell>, std::vector<Point3>>> scratch;
+  tbb::enumerable_thread_specific<std::pair<std::vector<RtCell>, std::vector<Corner>>> scratch;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, inner.size(), 256),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       auto& chunk = chunks.local();
@@ -172,22 +172,32 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
   tbb::parallel_sort(refs.begin(), refs.end(), [](const Ref& a, const Ref& b) { return a.edge < b.edge; });
   out.polygons = refs.size();
 
-  std::vector<Point3> vertices;
+  std::vector<Corner> vertices;
   for (const auto& chunk : chunks) vertices.insert(vertices.end(), chunk.corners.begin(), chunk.corners.end());
-  tbb::parallel_sort(vertices.begin(), vertices.end(), less_xyz);
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  auto id_of = [&](const Point3& p) {
-    return static_cast<Index>(std::lower_bound(vertices.begin(), vertices.end(), p, less_xyz) - vertices.begin());
+  auto by_key = [](const Corner& a, const Corner& b) { return a.key < b.key; };
+  tbb::parallel_sort(vertices.begin(), vertices.end(), by_key);
+  vertices.erase(std::unique(vertices.begin(), vertices.end(),
+                             [](const Corner& a, const Corner& b) { return a.key == b.key; }),
+                 vertices.end());
+  // Vertices stay apart by cell even where their positions coincide: every sample is a
+  // degenerate power vertex (all polar balls through it have power 0 there) that symbolic
+  // perturbation splits into several cells, and merging those by position pinches the crust
+  // (measured: a hundred non-manifold edges on a noisy 5k sphere, none without merging).
+  auto id_of = [&](const Corner& c) {
+    return static_cast<Index>(std::lower_bound(vertices.begin(), vertices.end(), c, by_key) - vertices.begin());
   };
+  std::vector<Index> polygon;
   for (const Ref& ref : refs) {
-    const std::size_t begin = ref.chunk->starts[ref.index], end = ref.chunk->starts[ref.index + 1];
-    const Index first = id_of(ref.chunk->corners[begin]);
-    for (std::size_t k = begin + 1; k + 1 < end; ++k) {
-      out.mesh.triangles.push_back({first, id_of(ref.chunk->corners[k]), id_of(ref.chunk->corners[k + 1])});
+    polygon.clear();
+    for (std::size_t k = ref.chunk->starts[ref.index]; k < ref.chunk->starts[ref.index + 1]; ++k)
+      polygon.push_back(id_of(ref.chunk->corners[k]));
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+      out.mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
       out.face_poles.push_back(ref.edge);
     }
   }
-  out.mesh.vertices = std::move(vertices);
+  out.mesh.vertices.reserve(vertices.size());
+  for (const Corner& c : vertices) out.mesh.vertices.push_back(c.point);
 
   if (out.unbounded_faces > 0)
     out.warnings.push_back(std::to_string(out.unbounded_faces) +

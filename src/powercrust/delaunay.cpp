@@ -25,7 +25,7 @@ std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double
 }
 
 std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
-                                         const std::array<Point3, 8>& corners) {
+                                         const std::array<Point3, 8>& corners, bool parallel) {
   std::vector<std::pair<Point3, Index>> input;
   input.reserve(samples.size() + corners.size());
   for (std::size_t i = 0; i < samples.size(); ++i)
@@ -34,7 +34,7 @@ std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
     input.emplace_back(corners[k], static_cast<Index>(samples.size() + k));
 
   Delaunay::Lock_data_structure lock(CGAL::bbox_3(corners.begin(), corners.end()), 50);
-  auto dt = std::make_unique<Delaunay>(Kernel(), &lock);
+  auto dt = std::make_unique<Delaunay>(Kernel(), parallel ? &lock : nullptr);
   dt->insert(input.begin(), input.end());
   dt->set_lock_data_structure(nullptr);
   return dt;

@@ -27,10 +27,10 @@ using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, DtTds>;
 /// `scale` times the largest extent (METHOD 4.2).
 std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double scale);
 
-/// Delaunay triangulation of samples and corners (parallel range insertion). The result
-/// holds no lock structure any more: it is meant to be read, from many threads.
+/// Delaunay triangulation of samples and corners (range insertion, parallel when `parallel`).
+/// The result holds no lock structure any more: it is meant to be read, from many threads.
 std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
-                                         const std::array<Point3, 8>& corners);
+                                         const std::array<Point3, 8>& corners, bool parallel);
 
 /// Finite cells in iteration order; sets each cell's info to its position.
 std::vector<Delaunay::Cell_handle> number_finite_cells(Delaunay& dt);

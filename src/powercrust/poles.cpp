@@ -1,4 +1,5 @@
 // Voronoi vertices and poles of the samples, with welding and opposite-pole weights (METHOD 4.4-4.5).
+#include "robust_centres.h"
 #include "stages.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -15,6 +16,8 @@ namespace {
 
 using Cell = Delaunay::Cell_handle;
 constexpr std::size_t kGrain = 1024;
+// Poles whose centres and radii agree to this fraction of the bbox diagonal are one ball.
+constexpr double kWeldTolerance = 1e-11;
 
 template <class F>
 void parallel_indices(std::size_t n, F&& f) {
@@ -74,29 +77,36 @@ double opposite_weight(const Point3& s, const Point3& outer, const Point3& inner
   return std::clamp(-(a * b) / den, 0.0, 1.0);
 }
 
-// Merge poles with identical centres into the one of lowest id; returns the old->new map.
-std::vector<Index> weld_poles(std::vector<Pole>& poles) {
-  std::vector<Index> order(poles.size());
-  std::iota(order.begin(), order.end(), Index{0});
-  tbb::parallel_sort(order.begin(), order.end(), [&](Index a, Index b) {
-    const Point3& p = poles[a].center;
-    const Point3& q = poles[b].center;
-    return std::make_tuple(p.x(), p.y(), p.z(), a) < std::make_tuple(q.x(), q.y(), q.z(), b);
-  });
-  std::vector<Index> canonical(poles.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const bool same = k > 0 && poles[order[k]].center == poles[order[k - 1]].center;
-    canonical[order[k]] = same ? canonical[order[k - 1]] : order[k];
-  }
-  std::vector<Index> remap(poles.size());
+// Merge poles whose balls agree within `tolerance` (centre and radius) into the one of
+// lowest id; returns the old->new map. Cospherical samples give many cells with one centre,
+// and a sphere's inner poles agree to rounding: as separate weighted points they would only
+// feed the regular triangulation near-degenerate (exact, slow) predicates.
+std::vector<Index> weld_poles(std::vector<Pole>& poles, double tolerance) {
+  const std::size_t n = poles.size();
+  // Cells of the tolerance grid, centred on 0 (where a sphere's inner poles gather); a cluster
+  // of rounding-level differences straddles a cell border only by bad luck (~1e-4).
+  using Key = std::array<long long, 4>;
+  auto key = [&](const Pole& p) {
+    return Key{std::llround(p.center.x() / tolerance), std::llround(p.center.y() / tolerance),
+               std::llround(p.center.z() / tolerance), std::llround(p.radius / tolerance)};
+  };
+  std::vector<std::pair<Key, Index>> order(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { order[i] = {key(poles[i]), static_cast<Index>(i)}; });
+  tbb::parallel_sort(order.begin(), order.end());
+  std::vector<Index> root(n);
+  for (std::size_t i = 0; i < n; ++i)
+    root[order[i].second] = i > 0 && order[i].first == order[i - 1].first ? root[order[i - 1].second] : order[i].second;
+  auto find = [&](Index v) { return root[v]; };
+  std::vector<Index> remap(n);
   std::vector<Pole> kept;
-  kept.reserve(poles.size());
-  for (std::size_t p = 0; p < poles.size(); ++p) {
-    if (canonical[p] == p) {
+  kept.reserve(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    const Index first = find(static_cast<Index>(p));
+    if (first == p) {
       remap[p] = static_cast<Index>(kept.size());
       kept.push_back(poles[p]);
     } else {
-      remap[p] = remap[canonical[p]];
+      remap[p] = remap[first];  // first < p: already placed
     }
   }
   poles = std::move(kept);
@@ -110,7 +120,11 @@ PoleStage compute_poles(Delaunay& dt, const std::vector<Point3>& samples, bool k
   std::vector<Point3> centres(cells.size());
   parallel_indices(cells.size(), [&](std::size_t k) {
     const auto v = sorted_vertices(cells[k]);
-    centres[k] = CGAL::circumcenter(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point());
+    // Unweighted power vertex = circumcentre, with the exact fallback: a nearly flat cell of
+    // cospherical samples (grid rings) gives doubles a centre off by the sphere's radius.
+    using Weighted = Kernel::Weighted_point_3;
+    centres[k] = power_vertex(Weighted(v[0]->point()), Weighted(v[1]->point()), Weighted(v[2]->point()),
+                              Weighted(v[3]->point()));
   });
 
   const std::size_t n = samples.size();
@@ -147,7 +161,10 @@ PoleStage compute_poles(Delaunay& dt, const std::vector<Point3>& samples, bool k
                                                             centres[chosen[i][1]])};
   }
   const std::size_t before = out.poles.size();
-  const std::vector<Index> remap = weld_poles(out.poles);
+  const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const std::vector<Index> remap = weld_poles(out.poles, kWeldTolerance * diagonal);
   out.welded_poles = before - out.poles.size();
   for (auto& sp : out.sample_poles) sp.outer = remap[sp.outer], sp.inner = remap[sp.inner];
   for (auto& cp : cell_pole)

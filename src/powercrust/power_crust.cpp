@@ -57,7 +57,8 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   StageClock clock(progress);
   {
     clock.begin("delaunay");
-    std::unique_ptr<Delaunay> dt = build_delaunay(result.samples, result.bounding_points);
+    std::unique_ptr<Delaunay> dt = build_delaunay(result.samples, result.bounding_points,
+                                                  result.samples.size() >= options.parallel_insertion_from);
     stats.seconds_delaunay = clock.lap("delaunay");
     clock.begin("poles");
     PoleStage poles = compute_poles(*dt, result.samples, options.keep_delaunay_cells);
@@ -72,7 +73,8 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   }
 
   clock.begin("power_diagram");
-  const PowerDiagram diagram = build_power_diagram(result.poles);
+  const PowerDiagram diagram =
+      build_power_diagram(result.poles, result.poles.size() >= options.parallel_insertion_from);
   stats.power_diagram_cells = diagram.rt->number_of_finite_cells();
   stats.seconds_power_diagram = clock.lap("power_diagram");
 

@@ -57,7 +57,7 @@ double intersection_weight(const Pole& p, const Pole& q) {
          den;
 }
 
-PowerDiagram build_power_diagram(std::vector<Pole>& poles) {
+PowerDiagram build_power_diagram(std::vector<Pole>& poles, bool parallel) {
   using Weighted = Kernel::Weighted_point_3;
   std::vector<std::pair<Weighted, Index>> input;
   input.reserve(poles.size());
@@ -70,7 +70,7 @@ PowerDiagram build_power_diagram(std::vector<Pole>& poles) {
   PowerDiagram out;
   {
     Regular::Lock_data_structure lock(box, 50);
-    out.rt = std::make_unique<Regular>(Kernel(), &lock);
+    out.rt = std::make_unique<Regular>(Kernel(), parallel ? &lock : nullptr);
     out.rt->insert(input.begin(), input.end());
     out.rt->set_lock_data_structure(nullptr);
   }

@@ -32,8 +32,8 @@ struct PowerDiagram {
   std::vector<RtVertex> vertex_of_pole;
 };
 
-/// Build the power diagram and set Pole::is_hidden.
-PowerDiagram build_power_diagram(std::vector<Pole>& poles);
+/// Build the power diagram (parallel insertion when `parallel`) and set Pole::is_hidden.
+PowerDiagram build_power_diagram(std::vector<Pole>& poles, bool parallel);
 
 /// Adjacency of the poles through finite regular-triangulation edges (compressed rows), each
 /// with w_pq = (r_p^2 + r_q^2 - |p-q|^2) / (2 r_p r_q), the cosine of the balls' intersection

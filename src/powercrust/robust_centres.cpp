@@ -1,8 +1,8 @@
 // Power vertices by interval arithmetic with an exact fallback, deterministic to the bit.
 #include "robust_centres.h"
 
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/constructions/kernel_ftC3.h>
 
 #include <algorithm>
@@ -11,16 +11,22 @@
 namespace envcrust::powercrust {
 namespace {
 
-// Accept the interval result when it is this tight relative to the inputs' magnitude.
-constexpr double kRelativeWidth = 1e-13;
+// Accept the interval result when it is this tight relative to the inputs' magnitude: far
+// below any geometric scale of the crust, and wide enough that only near-degenerate cells
+// (nearly coincident balls) pay for exact arithmetic.
+constexpr double kRelativeWidth = 1e-10;
 
+// The numerators and denominator of CGAL's weighted circumcentre: ring operations only, so
+// Mpzf computes them exactly.
 template <class FT>
-void solve(const Kernel::Weighted_point_3& p, const Kernel::Weighted_point_3& q,
-           const Kernel::Weighted_point_3& r, const Kernel::Weighted_point_3& s, FT& x, FT& y, FT& z) {
+void determinants(const Kernel::Weighted_point_3& p, const Kernel::Weighted_point_3& q,
+                  const Kernel::Weighted_point_3& r, const Kernel::Weighted_point_3& s, FT& num_x,
+                  FT& num_y, FT& num_z, FT& den) {
   auto c = [](double v) { return FT(v); };
-  CGAL::weighted_circumcenterC3(
+  CGAL::determinants_for_weighted_circumcenterC3(
       c(p.x()), c(p.y()), c(p.z()), c(p.weight()), c(q.x()), c(q.y()), c(q.z()), c(q.weight()),
-      c(r.x()), c(r.y()), c(r.z()), c(r.weight()), c(s.x()), c(s.y()), c(s.z()), c(s.weight()), x, y, z);
+      c(r.x()), c(r.y()), c(r.z()), c(r.weight()), c(s.x()), c(s.y()), c(s.z()), c(s.weight()),
+      num_x, num_y, num_z, den);
 }
 
 }  // namespace
@@ -33,18 +39,23 @@ Point3 power_vertex(const Kernel::Weighted_point_3& p, const Kernel::Weighted_po
                       std::sqrt(std::max(0.0, w->weight()))});
   {
     using Interval = CGAL::Interval_nt<>;
-    Interval x, y, z;
-    solve(p, q, r, s, x, y, z);
-    const double tolerance = kRelativeWidth * scale;
-    auto tight = [&](const Interval& i) {
-      return std::isfinite(i.inf()) && std::isfinite(i.sup()) && i.sup() - i.inf() <= tolerance;
-    };
-    if (tight(x) && tight(y) && tight(z))
-      return Point3(CGAL::to_double(x), CGAL::to_double(y), CGAL::to_double(z));
+    Interval nx, ny, nz, den;
+    determinants(p, q, r, s, nx, ny, nz, den);
+    if (!CGAL::possibly(den == 0)) {
+      const Interval inv = 1 / (2 * den);
+      const Interval x = p.x() + nx * inv, y = p.y() - ny * inv, z = p.z() + nz * inv;
+      const double tolerance = kRelativeWidth * scale;
+      auto tight = [&](const Interval& i) { return i.sup() - i.inf() <= tolerance; };
+      if (tight(x) && tight(y) && tight(z))
+        return Point3(CGAL::to_double(x), CGAL::to_double(y), CGAL::to_double(z));
+    }
   }
-  CGAL::Exact_rational x, y, z;
-  solve(p, q, r, s, x, y, z);
-  return Point3(CGAL::to_double(x), CGAL::to_double(y), CGAL::to_double(z));
+  // Exact determinants, one rounding each: accurate to a few ulps whatever the cancellation.
+  CGAL::Mpzf nx, ny, nz, den;
+  determinants(p, q, r, s, nx, ny, nz, den);
+  const double d = 2 * CGAL::to_double(den);
+  return Point3(p.x() + CGAL::to_double(nx) / d, p.y() - CGAL::to_double(ny) / d,
+                p.z() + CGAL::to_double(nz) / d);
 }
 
 }  // namespace envcrust::powercrust

@@ -47,8 +47,8 @@ struct PoleStage {
   std::size_t welded_poles = 0;
 };
 
-/// Compute Voronoi vertices, poles (welded at equal centres, ids in sample order) and the
-/// opposite-pole weights.
+/// Compute Voronoi vertices, poles (welded where balls agree to ~1e-11 diag, ids in sample
+/// order) and the opposite-pole weights.
 PoleStage compute_poles(Delaunay& dt, const std::vector<Point3>& samples, bool keep_cells);
 
 /// What labeling did beyond setting Pole::label.

@@ -1,0 +1,120 @@
+// The crust on sampled sphere and torus (sizes, noise), the open cylinder, face provenance.
+#include "support.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <tuple>
+
+using namespace envcrust;
+using namespace envcrust::powercrust;
+
+namespace {
+
+struct Case {
+  const char* surface;
+  std::size_t count;
+  double noise;
+  int euler;
+};
+
+class CrustOnClosedSurface : public ::testing::TestWithParam<Case> {};
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  return std::string(info.param.surface) + "_" + std::to_string(info.param.count) +
+         (info.param.noise > 0 ? "_noisy" : "_exact");
+}
+
+}  // namespace
+
+TEST_P(CrustOnClosedSurface, is_a_closed_oriented_manifold_near_the_surface) {
+  const Case c = GetParam();
+  const auto points = test_support::sample_builtin(c.surface, c.count, c.noise);
+  const auto result = power_crust(points);
+  const auto t = test_support::crust_topology(result.crust);
+  const auto welded = topology::analyze_topology(result.crust);
+  const double hausdorff = test_support::relative_hausdorff(result.crust, c.surface);
+  RecordProperty("euler", static_cast<int>(t.euler_characteristic));
+  RecordProperty("hausdorff_rel_diag", std::to_string(hausdorff));
+  std::printf("[ measured ] %s %zu noise %g: chi %ld, components %zu, hausdorff %.3f%% of diag, "
+              "%zu faces; welded by position: chi %ld, %zu non-manifold edges, %zu vertices\n",
+              c.surface, c.count, c.noise, t.euler_characteristic, t.components.size(), 100 * hausdorff,
+              t.faces, welded.euler_characteristic, welded.non_manifold_edges, welded.non_manifold_vertices);
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.misoriented_edges, 0u);
+  EXPECT_EQ(t.euler_characteristic, c.euler);
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_LT(hausdorff, 0.01);
+}
+
+// Noise-free torus samples stop at 2k: their inner poles lie within h^2 of the core circle and
+// their hole's outer poles near the z-axis, so every inner power cell (a meridian wedge) meets
+// every axis cell (a horizontal slab) on the inner wall. The power diagram and the crust grow
+// quadratically (measured: 3.5k In x 1.7k axis poles give 292k In-Out faces at 5k samples, 224 s
+// at 20k); that is the algorithm's output on this input, not a numerical accident. Noise of
+// 0.001 diag scatters the poles and the size becomes linear again (7.6 cells per pole).
+INSTANTIATE_TEST_SUITE_P(
+    PowerCrust, CrustOnClosedSurface,
+    ::testing::Values(Case{"sphere", 2000, 0.0, 2}, Case{"sphere", 2000, 0.001, 2},
+                      Case{"sphere", 10000, 0.0, 2}, Case{"sphere", 10000, 0.001, 2},
+                      Case{"sphere", 50000, 0.0, 2},
+                      Case{"torus", 2000, 0.0, 0}, Case{"torus", 2000, 0.001, 0},
+                      Case{"torus", 10000, 0.001, 0}),
+    case_name);
+
+// At 50k points a noise of 0.001 diag is a fifth of the sample spacing (0.22 h on the sphere,
+// against 0.04 h at 2k): beyond what the Power Crust's guarantees allow, and the crust, still
+// closed, oriented and within 0.4% of the surface, carries a few small handles and may enclose
+// a small bubble (measured: sphere chi -8; torus chi -2 with 2 components). Recorded, not
+// asserted.
+TEST(PowerCrustCrust, noisy_50k_samples_stay_closed_and_close_but_grow_small_handles) {
+  for (const auto& [name, euler] : {std::pair{"sphere", 2}, std::pair{"torus", 0}}) {
+    const auto points = test_support::sample_builtin(name, 50000, 0.001);
+    const auto result = power_crust(points);
+    const auto t = test_support::crust_topology(result.crust);
+    const double hausdorff = test_support::relative_hausdorff(result.crust, name);
+    std::printf("[ measured ] %s 50000 noise 0.001: chi %ld (surface %d), components %zu, hausdorff %.3f%% of diag\n",
+                name, t.euler_characteristic, euler, t.components.size(), 100 * hausdorff);
+    EXPECT_TRUE(t.is_closed());
+    EXPECT_TRUE(t.is_manifold());
+    EXPECT_EQ(t.misoriented_edges, 0u);
+    EXPECT_LT(hausdorff, 0.01);
+  }
+}
+
+TEST(PowerCrustCrust, open_cylinder_is_closed_off_by_the_direct_power_crust) {
+  // With noise: exact samples put the inner poles on the axis, where (as on the exact torus)
+  // the power diagram grows quadratically (41 s here).
+  const auto points = test_support::sample_builtin("cylinder", 10000, 0.001);
+  const auto result = power_crust(points);
+  const auto t = test_support::crust_topology(result.crust);
+  std::printf("[ measured ] open cylinder 10k noise 0.001: chi %ld, boundary loops %zu, components %zu, manifold %d\n",
+              t.euler_characteristic, t.boundary_loops.size(), t.components.size(), t.is_manifold() ? 1 : 0);
+  // The Power Crust always bounds a solid: the two rims get capped (METHOD 7, Figs 3-4).
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_EQ(t.boundary_loops.size(), 0u);
+  EXPECT_EQ(t.misoriented_edges, 0u);
+}
+
+TEST(PowerCrustCrust, each_face_points_from_its_inner_pole_to_its_outer_pole) {
+  const auto points = test_support::sample_builtin("torus", 5000, 0.001);
+  const auto result = power_crust(points);
+  ASSERT_EQ(result.crust_face_poles.size(), result.crust.triangles.size());
+  EXPECT_EQ(result.stats.crust_faces, result.crust.triangles.size());
+  double agreeing = 0, total = 0;
+  for (std::size_t f = 0; f < result.crust.triangles.size(); ++f) {
+    const auto& [in, out] = result.crust_face_poles[f];
+    EXPECT_EQ(result.poles[in].label, PoleLabel::In);
+    EXPECT_EQ(result.poles[out].label, PoleLabel::Out);
+    const auto& t = result.crust.triangles[f];
+    const auto& v = result.crust.vertices;
+    const Vector3 normal = CGAL::cross_product(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
+    const double area = std::sqrt(normal.squared_length());
+    total += area;
+    if (normal * (result.poles[out].center - result.poles[in].center) >= 0) agreeing += area;
+  }
+  // Triangles with two corners at one sample (a degenerate power vertex split by the
+  // perturbation) have no reliable normal; they carry no area, which is what counts.
+  EXPECT_GT(agreeing, 0.9999 * total);
+}

@@ -1,0 +1,57 @@
+// Labeling: both threshold presets, explicit thresholds, and independence of the thread count.
+#include "support.h"
+
+#include <tbb/global_control.h>
+
+#include <gtest/gtest.h>
+
+using namespace envcrust;
+using namespace envcrust::powercrust;
+
+TEST(PowerCrustLabeling, both_presets_give_a_closed_sphere) {
+  const auto points = test_support::sample_builtin("sphere", 5000, 0.001);
+  for (const LabelPreset preset : {LabelPreset::Code, LabelPreset::Readme}) {
+    PowerCrustOptions options;
+    options.preset = preset;
+    const auto result = power_crust(points, options);
+    const auto t = test_support::crust_topology(result.crust);
+    EXPECT_TRUE(t.is_closed());
+    EXPECT_TRUE(t.is_manifold());
+    EXPECT_EQ(t.euler_characteristic, 2);
+    EXPECT_EQ(result.stats.unknown_poles, 0u);
+    EXPECT_EQ(result.stats.inner_poles + result.stats.outer_poles, result.stats.poles);
+  }
+}
+
+TEST(PowerCrustLabeling, every_pole_is_labeled_on_a_torus_without_the_fallback) {
+  const auto points = test_support::sample_builtin("torus", 5000, 0.001);
+  PowerCrustOptions options;
+  options.resolve_unknown = false;
+  const auto result = power_crust(points, options);
+  EXPECT_EQ(result.stats.unknown_poles, 0u);
+  EXPECT_EQ(result.stats.resolved_unknown_poles, 0u);
+  EXPECT_EQ(test_support::crust_topology(result.crust).euler_characteristic, 0);
+}
+
+TEST(PowerCrustLabeling, result_does_not_depend_on_the_thread_count) {
+  const auto points = test_support::sample_builtin("torus", 5000, 0.001);
+  PowerCrustResult serial;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    serial = power_crust(points);
+  }
+  PowerCrustOptions options;
+  options.parallel_insertion_from = 0;  // lock-grid insertion for both triangulations
+  const auto parallel = power_crust(points, options);
+  ASSERT_EQ(serial.poles.size(), parallel.poles.size());
+  for (std::size_t i = 0; i < serial.poles.size(); ++i) {
+    EXPECT_EQ(serial.poles[i].center, parallel.poles[i].center);
+    EXPECT_EQ(serial.poles[i].label, parallel.poles[i].label);
+    EXPECT_EQ(serial.poles[i].is_hidden, parallel.poles[i].is_hidden);
+  }
+  EXPECT_EQ(serial.crust.vertices, parallel.crust.vertices);
+  EXPECT_EQ(serial.crust.triangles, parallel.crust.triangles);
+  EXPECT_EQ(serial.crust_face_poles, parallel.crust_face_poles);
+  EXPECT_EQ(serial.power_shape.triangles, parallel.power_shape.triangles);
+  EXPECT_EQ(serial.power_shape.tetrahedra, parallel.power_shape.tetrahedra);
+}

@@ -1,0 +1,107 @@
+// Poles of the samples: inner poles of a sphere near its centre, weights, welding on grids.
+#include "support.h"
+
+#include <gtest/gtest.h>
+
+using namespace envcrust;
+using namespace envcrust::powercrust;
+
+namespace {
+double norm(const Point3& p) { return std::sqrt((p - CGAL::ORIGIN).squared_length()); }
+}  // namespace
+
+TEST(PowerCrustPoles, inner_poles_of_a_sphere_lie_deep_inside_it) {
+  const auto points = test_support::sample_builtin("sphere", 10000, 0.0);
+  const auto result = power_crust(points);
+  std::size_t inner = 0, central = 0;
+  for (const Pole& p : result.poles) {
+    if (p.label == PoleLabel::In) {
+      ++inner;
+      EXPECT_LT(norm(p.center), 1.0);
+      central += norm(p.center) < 0.5;
+    } else if (p.label == PoleLabel::Out) {
+      EXPECT_GT(norm(p.center), 1.0);
+    }
+  }
+  EXPECT_GT(inner, 0u);
+  EXPECT_GT(static_cast<double>(central), 0.95 * static_cast<double>(inner));
+}
+
+TEST(PowerCrustPoles, inner_poles_lie_inside_the_crust) {
+  const auto points = test_support::sample_builtin("sphere", 10000, 0.0);
+  const auto result = power_crust(points);
+  const test_support::InsideTest inside(result.crust);
+  std::size_t outside = 0, inner = 0;
+  for (const Pole& p : result.poles) {
+    if (p.label != PoleLabel::In) continue;
+    ++inner;
+    outside += inside.side(p.center) == CGAL::ON_UNBOUNDED_SIDE;
+  }
+  EXPECT_GT(inner, 0u);
+  EXPECT_EQ(outside, 0u);
+}
+
+TEST(PowerCrustPoles, noisy_inner_poles_outside_the_crust_are_shallow_noise_poles) {
+  // Noise makes small polar balls hugging the surface; propagation labels some In although
+  // their centre lies just outside the crust (measured: 30 of ~10k on this torus).
+  const auto points = test_support::sample_builtin("torus", 10000, 0.001);
+  const auto result = power_crust(points);
+  const test_support::InsideTest inside(result.crust);
+  std::size_t outside = 0, inner = 0;
+  for (const Pole& p : result.poles) {
+    if (p.label != PoleLabel::In) continue;
+    ++inner;
+    if (inside.side(p.center) != CGAL::ON_UNBOUNDED_SIDE) continue;
+    ++outside;
+    const double rho = std::hypot(p.center.x(), p.center.y());
+    const double depth = std::hypot(rho - 1.0, p.center.z()) - 0.4;  // > 0 outside the torus
+    EXPECT_LT(p.radius, 0.1);  // a fourth of the true inner radius 0.4
+    EXPECT_LT(depth, 0.03);    // 1% of the diagonal
+  }
+  EXPECT_LT(static_cast<double>(outside), 0.01 * static_cast<double>(inner));
+}
+
+TEST(PowerCrustPoles, each_sample_has_opposite_poles_with_weight_in_unit_interval) {
+  const auto points = test_support::sample_builtin("torus", 2000, 0.001);
+  const auto result = power_crust(points);
+  ASSERT_EQ(result.sample_poles.size(), result.samples.size());
+  for (std::size_t i = 0; i < result.samples.size(); ++i) {
+    const auto& sp = result.sample_poles[i];
+    ASSERT_LT(sp.outer, result.poles.size());
+    ASSERT_LT(sp.inner, result.poles.size());
+    EXPECT_NE(sp.outer, sp.inner);
+    EXPECT_GE(sp.weight, 0.0);
+    EXPECT_LE(sp.weight, 1.0);
+    const Point3& s = result.samples[i];
+    const auto& outer = result.poles[sp.outer];
+    const auto& inner = result.poles[sp.inner];
+    // p- lies on the other side of s than p+, and p+ is the farther one.
+    EXPECT_LE((inner.center - s) * (outer.center - s), 0.0);
+    EXPECT_GE(CGAL::squared_distance(outer.center, s), CGAL::squared_distance(inner.center, s) * (1 - 1e-12));
+  }
+}
+
+TEST(PowerCrustPoles, cospherical_rings_weld_poles_and_give_a_closed_crust) {
+  const auto points = test_support::sphere_rings(40, 60);
+  const auto result = power_crust(points);
+  EXPECT_GT(result.stats.welded_poles, 0u);
+  const auto t = test_support::crust_topology(result.crust);
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.misoriented_edges, 0u);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_LT(test_support::relative_hausdorff(result.crust, "sphere"), 0.01);
+}
+
+TEST(PowerCrustPoles, cube_grid_gives_a_closed_crust) {
+  const auto points = test_support::cube_grid(16);
+  const auto result = power_crust(points);
+  EXPECT_GT(result.stats.welded_poles, 0u);
+  const auto t = test_support::crust_topology(result.crust);
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.misoriented_edges, 0u);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  for (const auto& v : result.crust.vertices)
+    EXPECT_NEAR(std::max({std::abs(v.x()), std::abs(v.y()), std::abs(v.z())}), 1.0, 0.15);
+}
