@@ -7,6 +7,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
+#include "envcrust/normals.h"
 #include "envcrust/pipeline.h"
 
 #include <iostream>
@@ -40,8 +41,15 @@ std::optional<double> parse_rho(const std::string& text) {
   throw UsageError("--rho must be 'auto' or a positive number (got '" + text + "')");
 }
 
+// Estimated normals scatter the per-sample reach values: take the 5th percentile, and skip
+// pairs closer than 5 spacings (METHOD.md §2).
+void use_estimated_normal_settings(const LoadedSurface& loaded, envelope::EnvelopeOptions& options) {
+  options.reach_quantile = 0.05;
+  options.reach_min_pair_distance = 5.0 * normals::average_spacing(loaded.samples.points);
+}
+
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
-  sub.add_option("input", cmd.input, "builtin:NAME, or a point file with normals (.xyz 6 columns, .ply)")
+  sub.add_option("input", cmd.input, "builtin:NAME, a point file (.xyz/.pts/.txt/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
   sub.add_option("--rho", cmd.rho, "Envelope radius: 'auto' (half the estimated reach) or a value")
       ->capture_default_str();
@@ -51,6 +59,8 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_option("--noise", cmd.sampling.noise_rel_diag,
                  "Gaussian noise on builtin:NAME samples, fraction of the diagonal")->capture_default_str();
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
+  sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
+               "Point files: do not detect boundary curves (a closed surface)");
 }
 
 nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
@@ -67,6 +77,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
+  // Estimated normals scatter the per-sample reach values: take the 5th percentile.
+  if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
   if (result.mesh.triangles.empty()) throw NumericalFailure("the reconstruction is empty");
@@ -140,6 +152,7 @@ void run_envelope(ReconstructCommand& cmd) {
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
+  if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const auto env = envelope::sample_envelope(loaded.samples, cmd.options.envelope);
   PointSet points;
   for (const auto& s : env.samples) {

@@ -5,9 +5,51 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
+#include "envcrust/boundary.h"
+#include "envcrust/mesh.h"
+#include "envcrust/normals.h"
 #include "envcrust/surfaces.h"
 
+#include <cmath>
+#include <optional>
+
 namespace envcrust::cli {
+namespace {
+
+// Vertices with their area-weighted normal lines, plus face centres with face normals (the
+// faces carry the surface between vertices), and the mesh's border loops with frames.
+void load_mesh_samples(const TriangleMesh& mesh, const std::string& spec, LoadedSurface& out) {
+  if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
+  out.source = "mesh";
+  const auto vertex_normals = normals::mesh_vertex_normal_lines(mesh);
+  try {
+    out.samples.boundary = boundary::mesh_boundary_curves(mesh, vertex_normals);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(spec + ": " + e.what());
+  }
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto& t : mesh.triangles)
+    for (Index v : t) used[v] = true;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!used[v] || vertex_normals[v].squared_length() == 0) continue;
+    out.samples.points.push_back(mesh.vertices[v]);
+    out.samples.normals.push_back(vertex_normals[v]);
+  }
+  for (const auto& t : mesh.triangles) {
+    const Point3& a = mesh.vertices[t[0]];
+    const Point3& b = mesh.vertices[t[1]];
+    const Point3& c = mesh.vertices[t[2]];
+    const Vector3 n = CGAL::cross_product(b - a, c - a);
+    const double len = std::sqrt(n.squared_length());
+    if (!(len > 0)) continue;
+    out.samples.points.push_back(CGAL::centroid(a, b, c));
+    out.samples.normals.push_back(n / len);
+  }
+  out.notes.push_back("mesh vertices and face centres; " + std::to_string(out.samples.boundary.size()) +
+                      " border loops");
+}
+
+}  // namespace
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling) {
   LoadedSurface out;
@@ -27,17 +69,39 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     return out;
   }
   const std::string ext = io::extension_of(spec);
-  if (ext == "xyz" || ext == "pts" || ext == "txt" || ext == "ply") {
-    PointSet points = io::read_points(spec);
-    if (!points.has_normals())
-      throw InvalidInput(spec + ": the point set has no normals (6 columns or PLY nx ny nz are needed)");
-    out.samples.points = std::move(points.points);
-    out.samples.normals = std::move(points.normals);
-    out.source = "points";
-    out.notes.push_back("normals from the file; no boundary curves");
+  std::optional<TriangleMesh> mesh;
+  if (ext == "off" || ext == "obj" || ext == "stl") {
+    mesh = io::read_triangle_mesh(spec);
+  } else if (ext == "ply") {
+    try {  // a PLY file with faces is a mesh, without faces a point set
+      mesh = mesh::triangulate_polygons(io::read_polygon_mesh(spec));
+    } catch (const IoError&) {
+    }
+  }
+  if (mesh) {
+    load_mesh_samples(*mesh, spec, out);
     return out;
   }
-  throw InvalidInput(spec + ": unknown input (expected builtin:NAME or a point file)");
+  PointSet points = io::read_points(spec);
+  out.source = "points";
+  if (points.has_normals()) {
+    out.notes.push_back("normal lines from the file");
+  } else {
+    normals::NormalOptions o;
+    points.normals = normals::estimate_normal_lines(points.points, o);
+    out.are_normals_estimated = true;
+    out.notes.push_back("normal lines estimated by PCA over " + std::to_string(o.neighbors) + " neighbours");
+  }
+  out.samples.points = std::move(points.points);
+  out.samples.normals = std::move(points.normals);
+  if (sampling.detect_boundary) {
+    auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals);
+    out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
+                        std::to_string(detection.dropped_loops) + " short loops dropped)");
+    out.samples.boundary = std::move(detection.curves);
+    for (auto& w : detection.warnings) out.notes.push_back(std::move(w));
+  }
+  return out;
 }
 
 }  // namespace envcrust::cli

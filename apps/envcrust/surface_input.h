@@ -15,12 +15,16 @@ struct BuiltinSampling {
   std::size_t count = 10000;
   double noise_rel_diag = 0.0;
   std::uint64_t seed = 1;
+  bool detect_boundary = true;   ///< point files: find boundary curves (off: treat as closed)
 };
 
-/// Samples of M and how they were obtained (for the report).
+/// Samples of M and how they were obtained (for the report). Point files get their normal
+/// lines from the file or by PCA, and their boundary curves by the angle-gap detector; meshes
+/// give vertex and face-centre samples, area-weighted normal lines and their border loops.
 struct LoadedSurface {
   envelope::SurfaceSamples samples;
   std::string source;                 ///< "builtin", "points", "mesh"
+  bool are_normals_estimated = false; ///< normals came from PCA, not from the data
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
 };
 

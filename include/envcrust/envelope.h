@@ -33,6 +33,10 @@ struct ReachOptions {
   /// Quantile of the per-point values taken as R-hat: 0 takes the minimum (exact samples);
   /// point clouds with noise want a small positive quantile (METHOD.md §2: 5th percentile).
   double quantile = 0.0;
+  /// Pairs closer than this are ignored. Estimated normals are off by a few degrees, and a
+  /// pair at distance d then reads d / (2 error) whatever the curvature: skip pairs shorter
+  /// than a few sample spacings. 0 for exact normals.
+  double min_pair_distance = 0.0;
   std::uint64_t seed = 1;
 };
 
@@ -65,6 +69,11 @@ struct EnvelopeOptions {
   /// Cap of the reach used for automatic rho, as a fraction of the bounding-box diagonal
   /// (a flat square has infinite reach; the envelope must still resolve the shape).
   double max_reach_rel_diag = 0.1;
+  /// Quantile of the per-sample reach values used for automatic rho: 0 (the minimum) for
+  /// exact normals; estimated normals want 0.05 (METHOD.md §2). Range [0, 1).
+  double reach_quantile = 0.0;
+  /// ReachOptions::min_pair_distance for automatic rho (absolute length; 0 for exact normals).
+  double reach_min_pair_distance = 0.0;
   /// Poisson-disk radius h of the envelope samples as a fraction of rho. The extraction
   /// needs cells spanning the shell with small lateral offset: 0.33 worked, 0.5 broke
   /// (METHOD.md §3.2); 0.25 gives a sheet error of rho/64 (F4). Range (0, 1].

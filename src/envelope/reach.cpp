@@ -76,6 +76,7 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
   const std::size_t n = pts.size();
   // Per point: the smallest Federer value over its pairs, split by pair length so that the
   // report can say whether curvature or a bottleneck limits the reach.
+  const double min_pair2 = options.min_pair_distance * options.min_pair_distance;
   std::vector<double> best(n, std::numeric_limits<double>::infinity());
   std::vector<double> best_near(n, std::numeric_limits<double>::infinity());
   std::vector<double> best_far(n, std::numeric_limits<double>::infinity());
@@ -85,7 +86,7 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
         if (i == j) continue;
         const Vector3 v = pts[j].p - pts[i].p;
         const double len2 = v.squared_length();
-        if (len2 == 0.0) continue;
+        if (len2 == 0.0 || len2 < min_pair2) continue;
         const double d = distance_to_tangent(pts[i], v);
         if (d <= 0.0) continue;
         const double value = len2 / (2.0 * d);

@@ -62,7 +62,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   if (options.rho) {
     out.rho = *options.rho;
   } else {
-    out.reach = estimate_reach(surface, ReachOptions{.seed = options.seed});
+    out.reach = estimate_reach(surface, ReachOptions{.quantile = options.reach_quantile,
+                                                   .min_pair_distance = options.reach_min_pair_distance,
+                                                   .seed = options.seed});
     const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
     out.rho = options.rho_rel_reach * capped;
   }
