@@ -2,7 +2,7 @@
 // triangulation of the same points (sequential and parallel), and peak memory. Each
 // measurement runs in a forked child, so every peak RSS belongs to one run. Usage:
 //   envcrust_bench_powercrust [--sizes 10000,100000,1000000] [--surfaces sphere,torus]
-//                             [--noise 0.001] [--check]
+//                             [--noise 0.001] [--parallel-from 200000] [--check]
 #include "envcrust/power_crust.h"
 #include "envcrust/surfaces.h"
 #include "envcrust/topology.h"
@@ -36,6 +36,7 @@ struct Args {
   std::vector<std::string> surfaces = {"sphere", "torus"};
   double noise = 0.0;
   bool check = false;
+  std::size_t parallel_from = powercrust::PowerCrustOptions().parallel_insertion_from;
 };
 
 // What a child sends back through its pipe.
@@ -67,10 +68,12 @@ Args parse(int argc, char** argv) {
       a.surfaces = split(argv[++i]);
     } else if (key == "--noise" && has_value) {
       a.noise = std::stod(argv[++i]);
+    } else if (key == "--parallel-from" && has_value) {
+      a.parallel_from = std::stoul(argv[++i]);
     } else if (key == "--check") {
       a.check = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--sizes a,b] [--surfaces s,t] [--noise x] [--check]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes a,b] [--surfaces s,t] [--noise x] [--parallel-from n] [--check]\n", argv[0]);
       std::exit(2);
     }
   }
@@ -89,10 +92,12 @@ std::vector<Point3> sample(const std::string& name, std::size_t n, double noise)
   return surfaces::sample_surface(*surfaces::make_builtin(name), options).points;
 }
 
-Measurement run_power_crust(const std::vector<Point3>& points, bool check) {
+Measurement run_power_crust(const std::vector<Point3>& points, const Args& args) {
   Measurement m;
+  powercrust::PowerCrustOptions options;
+  options.parallel_insertion_from = args.parallel_from;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto r = powercrust::power_crust(points);
+  const auto r = powercrust::power_crust(points, options);
   m.seconds[7] = since(t0);
   const auto& s = r.stats;
   const double stages[] = {s.seconds_delaunay, s.seconds_poles, s.seconds_power_diagram,
@@ -101,8 +106,10 @@ Measurement run_power_crust(const std::vector<Point3>& points, bool check) {
   m.poles = s.poles;
   m.hidden = s.hidden_poles;
   m.faces = s.crust_faces;
-  if (check) {
-    const auto t = topology::analyze_topology(r.crust);
+  if (args.check) {
+    topology::TopologyOptions options;
+    options.weld_identical_vertices = false;  // the crust's vertices are named by cell
+    const auto t = topology::analyze_topology(r.crust, options);
     m.euler = t.euler_characteristic;
     m.closed = t.is_closed();
     m.manifold = t.is_manifold();
@@ -160,7 +167,7 @@ int main(int argc, char** argv) {
               "hidden", "topology");
   for (const auto& name : args.surfaces) {
     for (const std::size_t n : args.sizes) {
-      const auto [pc, pc_mb] = in_child([&] { return run_power_crust(sample(name, n, args.noise), args.check); });
+      const auto [pc, pc_mb] = in_child([&] { return run_power_crust(sample(name, n, args.noise), args); });
       const auto [base, base_mb] = in_child([&] { return run_baselines(sample(name, n, args.noise)); });
       char topo[32] = "-";
       if (args.check)

@@ -46,8 +46,9 @@ struct PowerCrustOptions {
   /// Keep every finite Delaunay cell with its Voronoi vertex in PowerCrustResult (costs
   /// memory: about 6.5 cells per sample).
   bool keep_delaunay_cells = false;
-  /// Point count from which the triangulations are built by parallel insertion (a lock grid
-  /// costs more than it gains on small inputs). The result is the same either way.
+  /// Point count from which the triangulations are built by parallel insertion, when at least
+  /// 4 threads are available (a lock grid costs more than it gains on small inputs or on 2
+  /// cores; 0 forces it whatever the thread count). The result is the same either way.
   std::size_t parallel_insertion_from = 200000;
 };
 
@@ -113,7 +114,13 @@ struct PowerCrustResult {
   std::vector<Pole> poles;
   std::array<Point3, 8> bounding_points{}; ///< corners of the bounding cube (METHOD 4.2)
   std::vector<DelaunayCell> delaunay_cells;///< when options.keep_delaunay_cells, sorted by vertices
-  TriangleMesh crust;                      ///< closed, outward oriented (when built)
+  /// The crust (when built): fan-triangulated power faces between In and Out cells, outward
+  /// oriented. One vertex per power-diagram vertex (regular-triangulation cell): each sample
+  /// is a degenerate power vertex that several cells share, so a few vertices coincide in
+  /// position there. As indexed, the mesh is a closed oriented surface; welding by position
+  /// can pinch it where noise splits the In cells around a sample (analyze it with
+  /// TopologyOptions::weld_identical_vertices = false).
+  TriangleMesh crust;
   /// Per crust triangle: the {In pole, Out pole} regular-triangulation edge whose dual power
   /// face it triangulates (the face's outward normal points from the first to the second).
   std::vector<std::array<Index, 2>> crust_face_poles;

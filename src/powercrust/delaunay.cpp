@@ -33,7 +33,10 @@ std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
   for (std::size_t k = 0; k < corners.size(); ++k)
     input.emplace_back(corners[k], static_cast<Index>(samples.size() + k));
 
-  Delaunay::Lock_data_structure lock(CGAL::bbox_3(corners.begin(), corners.end()), 50);
+  // The lock grid spans the samples, not the 8x larger corner cube: there the data would fall
+  // into a few hundred grid cells and the threads would wait on each other (measured: 20x
+  // slower than a bare parallel DT at 1M points).
+  Delaunay::Lock_data_structure lock(CGAL::bbox_3(samples.begin(), samples.end()), 50);
   auto dt = std::make_unique<Delaunay>(Kernel(), parallel ? &lock : nullptr);
   dt->insert(input.begin(), input.end());
   dt->set_lock_data_structure(nullptr);

@@ -57,19 +57,16 @@ double intersection_weight(const Pole& p, const Pole& q) {
          den;
 }
 
-PowerDiagram build_power_diagram(std::vector<Pole>& poles, bool parallel) {
+PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel) {
   using Weighted = Kernel::Weighted_point_3;
   std::vector<std::pair<Weighted, Index>> input;
   input.reserve(poles.size());
-  CGAL::Bbox_3 box;
-  for (std::size_t i = 0; i < poles.size(); ++i) {
+  for (std::size_t i = 0; i < poles.size(); ++i)
     input.emplace_back(Weighted(poles[i].center, poles[i].radius * poles[i].radius),
                        static_cast<Index>(i));
-    box += poles[i].center.bbox();
-  }
   PowerDiagram out;
   {
-    Regular::Lock_data_structure lock(box, 50);
+    Regular::Lock_data_structure lock(lock_box, 50);
     out.rt = std::make_unique<Regular>(Kernel(), parallel ? &lock : nullptr);
     out.rt->insert(input.begin(), input.end());
     out.rt->set_lock_data_structure(nullptr);

@@ -3,6 +3,7 @@
 
 #include "envcrust/power_crust.h"
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Regular_triangulation_cell_base_3.h>
 #include <CGAL/Regular_triangulation_vertex_base_3.h>
@@ -32,8 +33,10 @@ struct PowerDiagram {
   std::vector<RtVertex> vertex_of_pole;
 };
 
-/// Build the power diagram (parallel insertion when `parallel`) and set Pole::is_hidden.
-PowerDiagram build_power_diagram(std::vector<Pole>& poles, bool parallel);
+/// Build the power diagram (parallel insertion when `parallel`, with a lock grid over
+/// `lock_box`: the samples' box, where most poles are; far outer poles share border cells)
+/// and set Pole::is_hidden.
+PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel);
 
 /// Adjacency of the poles through finite regular-triangulation edges (compressed rows), each
 /// with w_pq = (r_p^2 + r_q^2 - |p-q|^2) / (2 r_p r_q), the cosine of the balls' intersection

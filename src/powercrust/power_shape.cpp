@@ -39,17 +39,17 @@ void collect(const PowerDiagram& diagram, const std::vector<Pole>& poles, Index 
       if (t[0] == p) shape.tetrahedra.push_back(t);
     }
     const int i = c->index(v);
-    for (int skip = 0; skip < 4; ++skip) {
+    for (int skip = 0; skip < 4; ++skip) {  // the three facets of c that contain v
       if (skip == i) continue;
       std::array<Index, 3> f{};
       int k = 0;
-      bool ok = true;
+      bool all_inner = true;
       for (int j = 0; j < 4; ++j) {
         if (j == skip) continue;
-        ok = ok && inner(c->vertex(j));
-        if (ok) f[k++] = c->vertex(j)->info();
+        all_inner = all_inner && inner(c->vertex(j));
+        f[k++] = all_inner ? c->vertex(j)->info() : 0;
       }
-      if (ok && (f = sorted(f))[0] == p) shape.triangles.push_back(f);
+      if (all_inner && sorted(f)[0] == p) shape.triangles.push_back(sorted(f));
     }
     for (int j = 0; j < 4; ++j)
       if (j != i && inner(c->vertex(j)) && c->vertex(j)->info() > p)
