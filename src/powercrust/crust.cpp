@@ -1,4 +1,5 @@
-// The crust: power faces between In and Out cells, welded, oriented, triangulated (METHOD 4.8).
+// The crust: power faces between In and Out cells, vertices keyed by cell, oriented by the
+// circulation around each In-Out edge, fan-triangulated (METHOD 4.8).
 #include "robust_centres.h"
 #include "stages.h"
 
