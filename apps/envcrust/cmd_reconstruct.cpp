@@ -7,7 +7,6 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
-#include "envcrust/normals.h"
 #include "envcrust/pipeline.h"
 
 #include <iostream>
@@ -41,11 +40,10 @@ std::optional<double> parse_rho(const std::string& text) {
   throw UsageError("--rho must be 'auto' or a positive number (got '" + text + "')");
 }
 
-// Estimated normals scatter the per-sample reach values: take the 5th percentile, and skip
-// pairs closer than 5 spacings (METHOD.md §2).
-void use_estimated_normal_settings(const LoadedSurface& loaded, envelope::EnvelopeOptions& options) {
+// Estimated normals scatter the per-sample reach values: take the 5th percentile
+// (METHOD.md §2).
+void use_estimated_normal_settings(const LoadedSurface&, envelope::EnvelopeOptions& options) {
   options.reach_quantile = 0.05;
-  options.reach_min_pair_distance = 5.0 * normals::average_spacing(loaded.samples.points);
 }
 
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {

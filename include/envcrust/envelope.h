@@ -72,8 +72,11 @@ struct EnvelopeOptions {
   /// Quantile of the per-sample reach values used for automatic rho: 0 (the minimum) for
   /// exact normals; estimated normals want 0.05 (METHOD.md §2). Range [0, 1).
   double reach_quantile = 0.0;
-  /// ReachOptions::min_pair_distance for automatic rho (absolute length; 0 for exact normals).
-  double reach_min_pair_distance = 0.0;
+  /// Pairs closer than this many average sample spacings are ignored by the automatic reach
+  /// (ReachOptions::min_pair_distance): noise of sigma makes a pair at distance d read about
+  /// d^2 / (2 sigma), and a normal error e reads d / (2 e), whatever the curvature. Chords
+  /// longer than that still see the curvature exactly. Range >= 0.
+  double reach_min_pair_rel_spacing = 4.0;
   /// Poisson-disk radius h of the envelope samples as a fraction of rho. The extraction
   /// needs cells spanning the shell with small lateral offset: 0.33 worked, 0.5 broke
   /// (METHOD.md §3.2); 0.25 gives a sheet error of rho/64 (F4). Range (0, 1].

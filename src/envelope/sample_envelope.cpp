@@ -7,6 +7,7 @@
 #include "poisson_disk.h"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/compute_average_spacing.h>
 #include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
@@ -44,6 +45,8 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 1, "spacing_rel_rho", o.spacing_rel_rho);
   check(o.sheet_clearance > 0 && o.sheet_clearance <= 1, "sheet_clearance", o.sheet_clearance);
   check(o.rim_clearance > 0 && o.rim_clearance <= 1, "rim_clearance", o.rim_clearance);
+  check(o.reach_quantile >= 0 && o.reach_quantile < 1, "reach_quantile", o.reach_quantile);
+  check(o.reach_min_pair_rel_spacing >= 0, "reach_min_pair_rel_spacing", o.reach_min_pair_rel_spacing);
 }
 
 }  // namespace
@@ -63,8 +66,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     out.rho = *options.rho;
   } else {
     out.reach = estimate_reach(surface, ReachOptions{.quantile = options.reach_quantile,
-                                                   .min_pair_distance = options.reach_min_pair_distance,
-                                                   .seed = options.seed});
+                     .min_pair_distance = options.reach_min_pair_rel_spacing *
+                                          CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(surface.points, 6),
+                     .seed = options.seed});
     const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
     out.rho = options.rho_rel_reach * capped;
   }
