@@ -246,3 +246,37 @@ TEST_F(CliTest, powercrust_refuses_coplanar_points) {
   EXPECT_EQ(r.err, "envcrust: error: all 10 points are coplanar: nothing to reconstruct\n");
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
+
+TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 10000 --seed 3 -q -o " + path("c.xyz")).exit_code, 0);
+  const auto r = run_envcrust("reconstruct " + path("c.xyz") + " -r builtin:cylinder -o " + path("c.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 2);
+  EXPECT_EQ(a["is_manifold"], true);
+  // Away from the boundary the sheet follows the samples closely.
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+}
+
+TEST_F(CliTest, reconstruct_a_moebius_mesh) {
+  ASSERT_EQ(run_envcrust("sample moebius --mesh -q -o " + path("m.off")).exit_code, 0);
+  const auto r = run_envcrust("reconstruct " + path("m.off") + " -r builtin:moebius -o " + path("r.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = nlohmann::json::parse(r.out)["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_EQ(a["is_orientable"], false);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+}
+
+TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {
+  {
+    std::ofstream f(path("fin.off"));
+    f << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
+  }
+  const auto r = run_envcrust("reconstruct " + path("fin.off") + " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("fin.off") + ": edge (0, 1) has 3 faces: the mesh is not a surface\n");
+}
