@@ -2,7 +2,7 @@
 #include "envelope_candidates.h"
 
 #include "envcrust/nearest_index.h"
-#include "random.h"
+#include "envcrust/random.h"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>

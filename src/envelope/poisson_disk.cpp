@@ -1,7 +1,7 @@
 // Poisson-disk thinning on a hash grid.
 #include "poisson_disk.h"
 
-#include "random.h"
+#include "envcrust/random.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 
-#include "random.h"
+#include "envcrust/random.h"
 
 #include <tbb/parallel_for.h>
 

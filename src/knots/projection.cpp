@@ -1,6 +1,7 @@
 // Random rotations and the crossings of generic projections, with exact 2D orientation tests.
 #include "projection.h"
 
+#include "envcrust/random.h"
 #include "envcrust/errors.h"
 #include "input.h"
 
@@ -15,9 +16,6 @@ using Point2 = Kernel::Point_2;
 
 constexpr int max_rotations = 200;
 
-double uniform01(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
 
 struct Projected {
   std::vector<Point3> points;       ///< the original points of all loops, in order

@@ -1,4 +1,5 @@
 // Area-uniform random points on a triangle mesh (seeded, portable across standard libraries).
+#include "envcrust/random.h"
 #include "envcrust/mesh.h"
 
 #include <algorithm>
@@ -6,13 +7,6 @@
 #include <random>
 
 namespace envcrust::mesh {
-namespace {
-
-// std::uniform_real_distribution differs between standard libraries; this does not.
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-}  // namespace
-
 std::vector<Point3> sample_by_area(const TriangleMesh& mesh, std::size_t count,
                                    std::uint64_t seed) {
   std::vector<Point3> out;

@@ -2,6 +2,7 @@
 #include "builtin.h"
 #include "vector_ops.h"
 
+#include "envcrust/random.h"
 #include "envcrust/errors.h"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ class Random {
   explicit Random(std::uint64_t seed) : engine_(seed) {}
 
   /// Uniform in [0, 1), 53 random bits.
-  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+  double uniform() { return uniform01(engine_); }
 
   /// Standard normal by Box-Muller; the second variate of each pair is kept for the next call.
   double normal() {
