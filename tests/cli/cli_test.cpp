@@ -28,7 +28,7 @@ class CliTest : public ::testing::Test {
 }  // namespace
 
 TEST_F(CliTest, every_subcommand_has_help) {
-  for (const std::string sub : {"sample", "analyze"}) {
+  for (const std::string sub : {"sample", "analyze", "reconstruct", "envelope", "powercrust"}) {
     const auto r = run_envcrust(sub + " --help");
     EXPECT_EQ(r.exit_code, 0) << sub;
     EXPECT_NE(r.out.find("--json"), std::string::npos) << sub;
