@@ -12,7 +12,6 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 namespace envcrust::envelope {
