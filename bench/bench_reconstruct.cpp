@@ -1,0 +1,73 @@
+// envcrust_bench_reconstruct: time of the envelope reconstruction of built-in surfaces, as a
+// ratio to a bare CGAL Delaunay triangulation of the same envelope samples (same run).
+//   envcrust_bench_reconstruct [--sizes 10000,100000] [--surfaces trefoil-ribbon,moebius]
+#include "envcrust/pipeline.h"
+#include "envcrust/surfaces.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace envcrust;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::vector<std::string> split(const char* text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(item);
+  return out;
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> sizes = {"10000", "100000"};
+  std::vector<std::string> names = {"trefoil-ribbon", "moebius", "cylinder"};
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--sizes") == 0) sizes = split(argv[i + 1]);
+    if (std::strcmp(argv[i], "--surfaces") == 0) names = split(argv[i + 1]);
+  }
+  std::printf("| surface | input points | envelope samples | envelope s | sheet s | total s | bare DT s | ratio | peak MB |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& name : names) {
+    const auto surface = surfaces::make_builtin(name);
+    for (const auto& size : sizes) {
+      surfaces::SampleOptions o;
+      o.count = std::stoul(size);
+      o.with_normals = true;
+      const PointSet ps = surfaces::sample_surface(*surface, o);
+      envelope::SurfaceSamples samples{ps.points, ps.normals,
+                                       surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface))};
+      auto t0 = std::chrono::steady_clock::now();
+      const auto result = pipeline::reconstruct(samples);
+      const double total = seconds_since(t0);
+      const auto points = result.envelope.points();
+      t0 = std::chrono::steady_clock::now();
+      CGAL::Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
+      const double bare = seconds_since(t0);
+      std::printf("| %s | %s | %zu | %.2f | %.2f | %.2f | %.2f | %.1f× | %.0f |\n", name.c_str(), size.c_str(),
+                  points.size(), result.seconds.envelope, result.seconds.extraction, total, bare, total / bare,
+                  peak_rss_mb());
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
