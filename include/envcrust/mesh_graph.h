@@ -32,6 +32,10 @@ MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t 
 /// A manifold vertex has exactly one fan.
 std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& graph);
 
+/// Fan id of every corner 3 * face + slot: two corners of one vertex share an id exactly when
+/// their faces are joined through edges at that vertex.
+std::vector<std::uint32_t> corner_fans(const MeshGraph& graph);
+
 /// Per face, +1 or -1 so that faces sharing a two-face edge traverse it in opposite
 /// directions; `is_orientable[c]` for each component c (components given per face).
 struct Orientation {

@@ -34,6 +34,13 @@ struct Candidates {
   std::size_t unreliable = 0;       ///< large gap but the two conormal estimates disagree
 };
 
+/// The flagged candidates: their indices into the point set and their positions, in order.
+struct FlaggedSubset {
+  std::vector<std::size_t> ids;
+  std::vector<Point3> points;
+};
+FlaggedSubset flagged_subset(const std::vector<Point3>& points, const Candidates& candidates);
+
 /// Angle-gap test on the `neighbors` nearest points of each point (angle_gap.cpp).
 Candidates angle_gap_candidates(const std::vector<Point3>& points,
                                 const std::vector<Vector3>& normals, const PointIndex& index,

@@ -64,14 +64,7 @@ double closed_length(const Polyline& p) {
 std::vector<std::vector<std::size_t>> link_candidates(const std::vector<Point3>& points,
                                                       const Candidates& candidates,
                                                       double radius, double min_dot) {
-  std::vector<std::size_t> ids;
-  std::vector<Point3> flagged_points;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (candidates.flagged[i]) {
-      ids.push_back(i);
-      flagged_points.push_back(points[i]);
-    }
-  }
+  const auto [ids, flagged_points] = flagged_subset(points, candidates);
   const PointIndex index(flagged_points);
   UnionFind sets(ids.size());
   for (std::size_t a = 0; a < ids.size(); ++a) {

@@ -8,16 +8,20 @@
 
 namespace envcrust::boundary::detail {
 
-std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidates& candidates,
-                                     double radius, double min_dot) {
-  std::vector<std::size_t> ids;
-  std::vector<Point3> flagged_points;
+FlaggedSubset flagged_subset(const std::vector<Point3>& points, const Candidates& candidates) {
+  FlaggedSubset out;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (candidates.flagged[i]) {
-      ids.push_back(i);
-      flagged_points.push_back(points[i]);
+      out.ids.push_back(i);
+      out.points.push_back(points[i]);
     }
   }
+  return out;
+}
+
+std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidates& candidates,
+                                     double radius, double min_dot) {
+  const auto [ids, flagged_points] = flagged_subset(points, candidates);
   const PointIndex index(flagged_points);
   std::vector<char> reached(ids.size(), 0);
   std::vector<std::size_t> queue;
@@ -52,14 +56,7 @@ std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidat
 std::size_t filter_two_sided_support(const std::vector<Point3>& points,
                                      const std::vector<Vector3>& normals, Candidates& candidates,
                                      double radius, double min_dot) {
-  std::vector<std::size_t> ids;
-  std::vector<Point3> flagged_points;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (candidates.flagged[i]) {
-      ids.push_back(i);
-      flagged_points.push_back(points[i]);
-    }
-  }
+  const auto [ids, flagged_points] = flagged_subset(points, candidates);
   if (ids.empty()) return 0;
   const PointIndex index(flagged_points);
   std::vector<char> keep(ids.size(), 0);

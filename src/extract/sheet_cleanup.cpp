@@ -74,19 +74,11 @@ std::size_t split_pinched_vertices(TaggedMesh& t) {
   std::size_t copies = 0;
   for (int round = 0; round < 4; ++round) {
     const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
-    topology::UnionFind corners(3 * g.faces.size());
-    auto corner_of = [&](std::uint32_t face, Index vertex) {
-      const auto& f = g.faces[face];
-      return 3 * face + (f[0] == vertex ? 0u : (f[1] == vertex ? 1u : 2u));
-    };
-    for (std::size_t e = 0; e < g.edges.size(); ++e)
-      for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
-        for (Index v : {g.edges[e].first, g.edges[e].second})
-          corners.unite(corner_of(g.edge_faces[g.edge_face_begin[e]], v), corner_of(g.edge_faces[i], v));
+    const auto fan = topology::corner_fans(g);
     // Fans of each vertex: root corner -> faces.
     std::vector<std::map<std::uint32_t, std::vector<std::uint32_t>>> fans(g.num_vertices);
     for (std::uint32_t f = 0; f < g.faces.size(); ++f)
-      for (std::uint32_t k = 0; k < 3; ++k) fans[g.faces[f][k]][corners.find(3 * f + k)].push_back(f);
+      for (std::uint32_t k = 0; k < 3; ++k) fans[g.faces[f][k]][fan[3 * f + k]].push_back(f);
     std::vector<char> remove(g.faces.size(), 0);
     bool changed = false;
     for (Index v = 0; v < g.num_vertices; ++v) {

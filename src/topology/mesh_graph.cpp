@@ -57,7 +57,7 @@ MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t 
   return g;
 }
 
-std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& g) {
+std::vector<std::uint32_t> corner_fans(const MeshGraph& g) {
   // Corners (face, slot) are united when their faces share an edge at that corner's vertex;
   // the fans of a vertex are then the classes among its corners.
   UnionFind corners(3 * g.faces.size());
@@ -75,9 +75,16 @@ std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& g) {
       }
     }
   }
+  std::vector<std::uint32_t> fan(3 * g.faces.size());
+  for (std::uint32_t c = 0; c < fan.size(); ++c) fan[c] = corners.find(c);
+  return fan;
+}
+
+std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& g) {
+  const auto fan = corner_fans(g);
   std::vector<std::vector<std::uint32_t>> roots(g.num_vertices);
   for (std::uint32_t f = 0; f < g.faces.size(); ++f)
-    for (std::uint32_t k = 0; k < 3; ++k) roots[g.faces[f][k]].push_back(corners.find(3 * f + k));
+    for (std::uint32_t k = 0; k < 3; ++k) roots[g.faces[f][k]].push_back(fan[3 * f + k]);
   std::vector<std::uint32_t> fans(g.num_vertices, 0);
   for (std::size_t v = 0; v < g.num_vertices; ++v) {
     auto& r = roots[v];
