@@ -104,8 +104,8 @@ TEST(Envelope, automatic_rho_is_half_the_reach_capped_by_the_size) {
   const auto e = envelope::sample_envelope(exact_samples("cylinder", 5000));
   // Reach 1, cap 0.1 * diag = 0.346: rho = 0.173.
   EXPECT_NEAR(e.rho, 0.5 * 0.1 * std::sqrt(12.0), 1e-3);  // diag of the samples
-  const auto sphere = envelope::sample_envelope(exact_samples("torus", 8000));
-  EXPECT_NEAR(sphere.rho, 0.5 * 0.4, 0.02);  // torus tube radius 0.4 limits the reach
+  const auto torus = envelope::sample_envelope(exact_samples("torus", 8000));
+  EXPECT_NEAR(torus.rho, 0.5 * 0.4, 0.02);  // torus tube radius 0.4 limits the reach
 }
 
 TEST(Envelope, too_large_rho_is_reported) {
