@@ -10,7 +10,8 @@ build="${ENVCRUST_BUILD_DIR:-$root/build}"
 jobs="${ENVCRUST_JOBS:-2}"
 
 packages=(cmake ninja-build g++ pkg-config libcgal-dev libeigen3-dev libtbb-dev libboost-dev
-          libgmp-dev libmpfr-dev libcli11-dev nlohmann-json3-dev libgtest-dev libpng-dev)
+          libgmp-dev libmpfr-dev libcli11-dev nlohmann-json3-dev libgtest-dev libpng-dev
+          libembree-dev libfreetype-dev fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

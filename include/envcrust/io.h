@@ -1,12 +1,15 @@
 // File formats at the edge of the library: reading and writing point sets and meshes.
 #pragma once
 
+#include "envcrust/image.h"
 #include "envcrust/types.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace envcrust::io {
 
@@ -57,6 +60,30 @@ void write_atomic(const std::filesystem::path& path, bool binary,
 
 /// Write a text file atomically (reports, JSON).
 void write_text(const std::filesystem::path& path, const std::string& text);
+
+/// Balls (e.g. the polar balls of the Power Crust): centre, radius and an optional label.
+struct BallSet {
+  std::vector<Point3> centres;
+  std::vector<double> radii;        ///< one per centre, > 0
+  std::vector<std::string> labels;  ///< one per centre; "" when the line has none
+};
+
+/// Read balls from text, one per line: "x y z radius [label]" (what `envcrust powercrust
+/// --poles` writes, labels in/out/unknown); `#` comments and blank lines allowed.
+/// @throws IoError e.g. "poles.txt:4: expected x y z radius [label], got 3 values",
+///   "poles.txt:4: radius must be finite and > 0 (got -1)", "poles.txt: no balls".
+BallSet read_balls(const std::filesystem::path& path);
+
+/// The whole file as bytes (fonts, ...). @throws IoError "FILE: cannot open file" and friends.
+std::vector<std::uint8_t> read_binary_file(const std::filesystem::path& path);
+
+/// Write an RGB image as an 8-bit PNG, atomically. The bytes depend only on the pixels (no
+/// time stamp). @throws IoError naming the file on a bad image size or a failed write.
+void write_png(const std::filesystem::path& path, const render::Image& image);
+
+/// Read a PNG as 8-bit RGB (any colour type; alpha composed over black, 16-bit reduced).
+/// @throws IoError "FILE: not a PNG file (...)" and friends.
+render::Image read_png(const std::filesystem::path& path);
 
 /// Lower-case extension without the dot ("ply", "xyz"); "" when none.
 std::string extension_of(const std::filesystem::path& path);

@@ -1,0 +1,45 @@
+// Caption text: drawn with the given font, shortened to fit, refused when the font is bad.
+#include "fonts.h"
+#include "scenes.h"
+
+#include "envcrust/errors.h"
+
+#include <gtest/gtest.h>
+
+namespace envcrust::render {
+namespace {
+
+Image white(int width, int height) {
+  return Image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 3, 255)};
+}
+
+TEST(Text, unparsable_font_bytes_are_refused) {
+  const Font garbage{std::vector<std::uint8_t>(256, 'x')};
+  try {
+    compose_grid({{white(16, 16), "caption"}}, GridOptions{}, garbage);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "render: cannot use the font (FreeType error 2)");  // unknown format
+  }
+}
+
+TEST(Text, a_long_caption_is_shortened_to_its_cell) {
+  const auto font = testing::test_font();
+  if (!font) GTEST_SKIP() << "font " << testing::kFontPath << " not installed";
+  const Image grid = compose_grid({{white(60, 20), std::string(200, 'W')}}, GridOptions{}, font);
+  // Nothing is drawn into the side gaps: the caption stays within the 60-pixel cell.
+  for (int y = 0; y < grid.height; ++y) {
+    for (const int x : {0, 7, grid.width - 8, grid.width - 1})
+      EXPECT_EQ(testing::pixel(grid, x, y)[0], 255) << x << "," << y;
+  }
+}
+
+TEST(Text, same_caption_gives_the_same_bytes) {
+  const auto font = testing::test_font();
+  if (!font) GTEST_SKIP() << "font " << testing::kFontPath << " not installed";
+  const std::vector<Panel> panels = {{white(80, 20), "Möbius band"}};
+  EXPECT_EQ(compose_grid(panels, GridOptions{}, font).rgb, compose_grid(panels, GridOptions{}, font).rgb);
+}
+
+}  // namespace
+}  // namespace envcrust::render
