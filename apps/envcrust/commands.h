@@ -10,5 +10,6 @@ void register_analyze(CLI::App& app);
 void register_reconstruct(CLI::App& app);
 void register_envelope(CLI::App& app);
 void register_powercrust(CLI::App& app);
+void register_render(CLI::App& app);
 
 }  // namespace envcrust::cli

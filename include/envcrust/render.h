@@ -126,7 +126,8 @@ struct GridOptions {
 /// @throws InvalidOptions when rows * columns is smaller than the number of panels, or
 ///         one of rows, columns is 0 and the other not, or gap_px < 0;
 ///         InvalidInput when there is no panel, a panel's pixel data does not match its size,
-///         or the font data cannot be parsed.
+///         or the font data cannot be parsed; InvalidOptions for a font pixel_height outside
+///         [4, 512].
 Image compose_grid(const std::vector<Panel>& panels, const GridOptions& options,
                    const std::optional<Font>& font);
 

@@ -1,4 +1,5 @@
 // End-to-end tests of the envcrust binary: outputs, reports, exit codes and error messages.
+#include "cli_fixture.h"
 #include "envcrust/io.h"
 #include "run_command.h"
 
@@ -7,28 +8,12 @@
 
 #include <filesystem>
 
+using envcrust::testing::CliTest;
 using envcrust::testing::run_envcrust;
 namespace fs = std::filesystem;
 
-namespace {
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("envcrust_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
-
-}  // namespace
-
 TEST_F(CliTest, every_subcommand_has_help) {
-  for (const std::string sub : {"sample", "analyze", "reconstruct", "envelope", "powercrust"}) {
+  for (const std::string sub : {"sample", "analyze", "reconstruct", "envelope", "powercrust", "render"}) {
     const auto r = run_envcrust(sub + " --help");
     EXPECT_EQ(r.exit_code, 0) << sub;
     EXPECT_NE(r.out.find("--json"), std::string::npos) << sub;

@@ -12,12 +12,7 @@ namespace {
 
 template <class E>
 void expect_error(const Scene& scene, const std::string& message) {
-  try {
-    render_scene(scene, testing::small_options(32, 32));
-    FAIL() << "expected: " << message;
-  } catch (const E& e) {
-    EXPECT_EQ(std::string(e.what()), message);
-  }
+  EXPECT_EQ(testing::message_of<E>([&] { render_scene(scene, testing::small_options(32, 32)); }), message);
 }
 
 TriangleMesh triangle() {

@@ -167,12 +167,7 @@ TEST(RenderScene, same_scene_gives_the_same_bytes_at_any_thread_count) {
 }
 
 void expect_invalid_options(const RenderOptions& options, const std::string& message) {
-  try {
-    render_scene(sphere_scene(), options);
-    FAIL() << "expected InvalidOptions: " << message;
-  } catch (const InvalidOptions& e) {
-    EXPECT_EQ(std::string(e.what()), message);
-  }
+  EXPECT_EQ(testing::message_of<InvalidOptions>([&] { render_scene(sphere_scene(), options); }), message);
 }
 
 TEST(RenderScene, options_out_of_range_are_refused_with_the_field_named) {

@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <numbers>
+#include <string>
 
 namespace envcrust::render::testing {
 
@@ -44,6 +46,19 @@ inline std::size_t covered_pixels(const Image& image) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) count += is_black(image, x, y) ? 0 : 1;
   return count;
+}
+
+/// The message of the E thrown by `action`, or a description of what happened instead.
+template <class E, class Action>
+std::string message_of(Action&& action) {
+  try {
+    action();
+  } catch (const E& error) {
+    return error.what();
+  } catch (const std::exception& error) {
+    return std::string("unexpected exception: ") + error.what();
+  }
+  return "no exception";
 }
 
 }  // namespace envcrust::render::testing

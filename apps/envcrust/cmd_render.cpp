@@ -1,0 +1,255 @@
+// `envcrust render`: pictures of meshes, point clouds, balls and boundary loops (headless).
+#include "cli_common.h"
+#include "commands.h"
+#include "inputs.h"
+
+#include "envcrust/errors.h"
+#include "envcrust/io.h"
+#include "envcrust/render.h"
+#include "envcrust/topology.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace envcrust::cli {
+namespace {
+
+enum class PointStyle { Spheres, None };
+enum class BallLabels { In, Out, All };
+
+struct RenderCommand {
+  std::vector<std::string> inputs;
+  std::string output;
+  std::string size = "800x600";
+  std::string view = "iso";
+  bool is_flat = false;
+  bool use_wireframe = false;
+  std::string front_color, back_color, boundary_color;  ///< "#rrggbb"; empty: library default
+  PointStyle points_as = PointStyle::Spheres;
+  std::optional<double> point_radius;  ///< model units; unset: 0.4% of the diagonal
+  bool use_boundary = false;           ///< mesh files: draw their boundary loops
+  std::optional<double> tube_radius;   ///< model units; unset: 0.6% of the diagonal
+  std::vector<int> grid;               ///< rows, columns
+  std::string title;
+  std::vector<std::string> captions;
+  std::vector<std::string> balls;
+  BallLabels ball_labels = BallLabels::In;
+  float ball_opacity = 0.3f;
+  std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  int font_px = render::Font{}.pixel_height;
+  render::RenderOptions options;
+  CommonFlags common;
+};
+
+render::Color parse_color(const std::string& flag, const std::string& text) {
+  const std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  if (hex.size() != 6 || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
+    throw UsageError(flag + ": expected a colour as #rrggbb, got '" + text + "'");
+  auto channel = [&](int i) { return static_cast<float>(std::stoi(hex.substr(2 * i, 2), nullptr, 16)) / 255.0f; };
+  return {channel(0), channel(1), channel(2)};
+}
+
+void parse_size(const std::string& text, render::RenderOptions& options) {
+  char x = 0, extra = 0;
+  std::istringstream in(text);
+  if (!(in >> options.width >> x >> options.height) || (x != 'x' && x != 'X') || in >> extra)
+    throw UsageError("--size: expected WIDTHxHEIGHT in pixels, e.g. 800x600, got '" + text + "'");
+}
+
+render::View parse_view(const std::string& text) {
+  if (text == "iso") return render::View::iso();
+  if (text == "front") return render::View::front();
+  if (text == "top") return render::View::top();
+  render::View view;
+  char comma = 0, extra = 0;
+  std::istringstream in(text);
+  if (!(in >> view.azimuth_deg >> comma >> view.elevation_deg) || comma != ',' || in >> extra)
+    throw UsageError("--view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got '" + text + "'");
+  return view;
+}
+
+std::string default_caption(const std::string& spec) {
+  if (is_builtin_spec(spec)) return spec.substr(spec.find(':') + 1);
+  return std::filesystem::path(spec).filename().string();
+}
+
+/// What one panel shows, and counts for the report.
+struct PanelScene {
+  render::Scene scene;
+  nlohmann::json summary;
+};
+
+void add_balls(const RenderCommand& cmd, const std::string& path, PanelScene& panel) {
+  const io::BallSet balls = io::read_balls(path);
+  render::SphereLayer layer;
+  layer.color = {0.25f, 0.5f, 0.9f};
+  layer.opacity = cmd.ball_opacity;
+  for (std::size_t i = 0; i < balls.centres.size(); ++i) {
+    const std::string& label = balls.labels[i];
+    const bool keep = label.empty() || cmd.ball_labels == BallLabels::All ||
+                      (cmd.ball_labels == BallLabels::In && label == "in") ||
+                      (cmd.ball_labels == BallLabels::Out && label == "out");
+    if (!keep) continue;
+    layer.centres.push_back(balls.centres[i]);
+    layer.radii.push_back(balls.radii[i]);
+  }
+  panel.summary["balls"] = layer.centres.size();
+  panel.summary["balls_file"] = path;
+  if (!layer.centres.empty()) panel.scene.spheres.push_back(std::move(layer));
+}
+
+PanelScene panel_scene(const RenderCommand& cmd, const std::string& spec) {
+  PanelScene panel;
+  analysis::Reference reference = load_reference(spec);
+  render::CurveLayer loops;
+  if (cmd.tube_radius) loops.radius = *cmd.tube_radius;
+  if (!cmd.boundary_color.empty()) loops.colors = {parse_color("--boundary-color", cmd.boundary_color)};
+  loops.loops = reference.boundary;  // builtins: their exact boundary curves
+  panel.summary = {{"input", spec}, {"triangles", 0}, {"points", 0}};
+  if (reference.mesh) {
+    if (cmd.use_boundary && loops.loops.empty()) {
+      const auto topology = topology::analyze_topology(*reference.mesh);
+      for (const auto& loop : topology.boundary_loops) loops.loops.push_back(loop.polyline(topology.points));
+    }
+    render::MeshLayer mesh;
+    mesh.mesh = std::move(*reference.mesh);
+    mesh.shading = cmd.is_flat ? render::Shading::Flat : render::Shading::Smooth;
+    mesh.use_wireframe = cmd.use_wireframe;
+    if (!cmd.front_color.empty()) mesh.front = parse_color("--front-color", cmd.front_color);
+    if (!cmd.back_color.empty()) mesh.back = parse_color("--back-color", cmd.back_color);
+    panel.summary["triangles"] = mesh.mesh.triangles.size();
+    panel.scene.meshes.push_back(std::move(mesh));
+  } else if (cmd.points_as == PointStyle::Spheres) {
+    render::SphereLayer points;
+    points.centres = std::move(reference.points);
+    if (cmd.point_radius) points.radii = {*cmd.point_radius};
+    panel.summary["points"] = points.centres.size();
+    panel.scene.spheres.push_back(std::move(points));
+  }
+  panel.summary["boundary_loops"] = loops.loops.size();
+  if (!loops.loops.empty()) panel.scene.curves.push_back(std::move(loops));
+  return panel;
+}
+
+std::optional<render::Font> load_font(const RenderCommand& cmd, std::vector<std::string>& warnings) {
+  if (!std::filesystem::exists(cmd.font)) {
+    warnings.push_back("font " + cmd.font + " not found: captions and title left out");
+    return std::nullopt;
+  }
+  return render::Font{io::read_binary_file(cmd.font), cmd.font_px};
+}
+
+void run_render(RenderCommand& cmd) {
+  const auto start = std::chrono::steady_clock::now();
+  parse_size(cmd.size, cmd.options);
+  cmd.options.view = parse_view(cmd.view);
+  if (!cmd.captions.empty() && cmd.captions.size() != cmd.inputs.size())
+    throw UsageError("--caption: give one per input (" + std::to_string(cmd.inputs.size()) + "), got " +
+                     std::to_string(cmd.captions.size()));
+  if (cmd.balls.size() > cmd.inputs.size())
+    throw UsageError("--balls: at most one per input (" + std::to_string(cmd.inputs.size()) + "), got " +
+                     std::to_string(cmd.balls.size()));
+  if (!cmd.grid.empty() && cmd.grid.size() != 2) throw UsageError("--grid: expected ROWS COLUMNS");
+
+  std::vector<std::string> warnings;
+  std::vector<render::Panel> panels;
+  nlohmann::json panel_reports = nlohmann::json::array();
+  for (std::size_t i = 0; i < cmd.inputs.size(); ++i) {
+    const auto panel_start = std::chrono::steady_clock::now();
+    PanelScene panel = panel_scene(cmd, cmd.inputs[i]);
+    if (i < cmd.balls.size()) add_balls(cmd, cmd.balls[i], panel);
+    render::Image image;
+    try {
+      image = render::render_scene(panel.scene, cmd.options);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(cmd.inputs[i] + ": " + e.what());  // say which input it was
+    }
+    const std::string caption = cmd.captions.empty() ? default_caption(cmd.inputs[i]) : cmd.captions[i];
+    panel.summary["caption"] = caption;
+    panel.summary["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - panel_start).count();
+    panel_reports.push_back(panel.summary);
+    panels.push_back({std::move(image), caption});
+  }
+
+  // A single input without title or explicit caption is the picture itself, at --size.
+  render::Image picture;
+  if (panels.size() == 1 && cmd.title.empty() && cmd.captions.empty()) {
+    picture = std::move(panels[0].image);
+  } else {
+    render::GridOptions grid;
+    if (!cmd.grid.empty()) grid.rows = cmd.grid[0], grid.columns = cmd.grid[1];
+    grid.title = cmd.title;
+    grid.background = cmd.options.background;
+    const auto font = load_font(cmd, warnings);
+    try {
+      picture = render::compose_grid(panels, grid, font);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(cmd.font + ": " + e.what());  // only the font can be bad here
+    }
+  }
+  io::write_png(cmd.output, picture);
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (cmd.common.json) {
+    print_json({{"output", cmd.output}, {"width", picture.width}, {"height", picture.height},
+                {"panels", panel_reports}, {"seconds", seconds}, {"warnings", warnings}});
+    return;
+  }
+  for (const auto& w : warnings) std::cerr << "envcrust: warning: " << w << "\n";
+  if (cmd.common.quiet) return;
+  std::cout << "rendered " << panels.size() << (panels.size() == 1 ? " panel" : " panels") << " to " << cmd.output
+            << " (" << picture.width << " x " << picture.height << " pixels) in " << seconds << " s\n";
+}
+
+}  // namespace
+
+void register_render(CLI::App& app) {
+  auto cmd = std::make_shared<RenderCommand>();
+  CLI::App* sub = app.add_subcommand("render", "Render meshes, point clouds, balls and boundary loops to a PNG");
+  sub->add_option("inputs", cmd->inputs,
+                  "Meshes (.ply/.off/.obj/.stl), point files (.xyz/.pts/.txt/.ply) or builtin:NAME; "
+                  "several inputs become panels side by side")
+      ->required();
+  sub->add_option("-o,--output", cmd->output, "PNG file to write")->required();
+  sub->add_option("--size", cmd->size, "Pixels of each panel, WIDTHxHEIGHT")->capture_default_str();
+  sub->add_option("--view", cmd->view, "iso, front, top, or AZIMUTH,ELEVATION in degrees")->capture_default_str();
+  sub->add_option("--supersampling", cmd->options.supersampling, "Rays per pixel along each axis (1-4)")
+      ->capture_default_str();
+  sub->add_flag("--flat", cmd->is_flat, "Flat shading (one normal per triangle) instead of smooth");
+  sub->add_flag("--wireframe", cmd->use_wireframe, "Darken triangle edges");
+  sub->add_option("--front-color", cmd->front_color, "Colour of front faces, #rrggbb (default grey-blue)");
+  sub->add_option("--back-color", cmd->back_color, "Colour of back faces, #rrggbb (default terracotta)");
+  const std::map<std::string, PointStyle> point_styles = {{"spheres", PointStyle::Spheres}, {"none", PointStyle::None}};
+  sub->add_option("--points-as", cmd->points_as, "How point files are drawn: spheres or none")
+      ->transform(CLI::CheckedTransformer(point_styles, CLI::ignore_case))
+      ->default_str("spheres");
+  sub->add_option("--point-radius", cmd->point_radius, "Radius of point spheres in model units (default 0.4% of the diagonal)")
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--boundary", cmd->use_boundary,
+                "Draw the boundary loops of mesh inputs as tubes (builtin:NAME inputs always show theirs)");
+  sub->add_option("--tube-radius", cmd->tube_radius, "Radius of boundary tubes in model units (default 0.6% of the diagonal)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--boundary-color", cmd->boundary_color, "One colour for all boundary tubes, #rrggbb (default: a palette)");
+  sub->add_option("--balls", cmd->balls,
+                  "Balls 'x y z radius [label]' (e.g. powercrust --poles) drawn translucent over the i-th input");
+  const std::map<std::string, BallLabels> labels = {{"in", BallLabels::In}, {"out", BallLabels::Out}, {"all", BallLabels::All}};
+  sub->add_option("--ball-labels", cmd->ball_labels, "Which labelled balls to draw: in, out or all (unlabelled: always)")
+      ->transform(CLI::CheckedTransformer(labels, CLI::ignore_case))
+      ->default_str("in");
+  sub->add_option("--ball-opacity", cmd->ball_opacity, "Opacity of the balls, (0, 1]")->capture_default_str();
+  sub->add_option("--grid", cmd->grid, "Panels in ROWS COLUMNS (default: one row)")->expected(2);
+  sub->add_option("--title", cmd->title, "Title above the panels");
+  sub->add_option("--caption", cmd->captions, "Caption of each panel, one per input (default: the file name)");
+  sub->add_option("--font", cmd->font, "TrueType font for captions (missing: captions left out, with a warning)")
+      ->capture_default_str();
+  sub->add_option("--font-size", cmd->font_px, "Caption height in pixels")->capture_default_str();
+  add_common_flags(*sub, cmd->common);
+  sub->callback([cmd] { run_render(*cmd); });
+}
+
+}  // namespace envcrust::cli

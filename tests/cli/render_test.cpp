@@ -1,0 +1,130 @@
+// End-to-end tests of `envcrust render`: PNG size, panels, balls, warnings and error messages.
+#include "cli_fixture.h"
+#include "envcrust/io.h"
+#include "run_command.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+using envcrust::testing::CliTest;
+using envcrust::testing::run_envcrust;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Width and height from the PNG's IHDR chunk (bytes 16-23, big-endian).
+std::pair<unsigned, unsigned> png_size(const std::string& file) {
+  const auto bytes = envcrust::io::read_binary_file(file);
+  if (bytes.size() < 24) return {0, 0};
+  auto be32 = [&](std::size_t at) {
+    return (unsigned(bytes[at]) << 24) | (unsigned(bytes[at + 1]) << 16) | (unsigned(bytes[at + 2]) << 8) | bytes[at + 3];
+  };
+  return {be32(16), be32(20)};
+}
+
+/// Pixels where channel `c` exceeds both others by 40 (a saturated colour).
+int dominant_pixels(const envcrust::render::Image& image, int c) {
+  int count = 0;
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+    const int v = image.rgb[i + c], a = image.rgb[i + (c + 1) % 3], b = image.rgb[i + (c + 2) % 3];
+    count += v > a + 40 && v > b + 40 ? 1 : 0;
+  }
+  return count;
+}
+
+TEST_F(CliTest, render_a_builtin_renders_at_the_requested_size_with_its_boundary_tubes) {
+  const auto r = run_envcrust("render builtin:cylinder --size 160x120 -q -o " + path("c.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(png_size(path("c.png")), std::make_pair(160u, 120u));
+  const auto image = envcrust::io::read_png(path("c.png"));
+  EXPECT_GT(dominant_pixels(image, 1), 20);  // the first tube colour is green
+}
+
+TEST_F(CliTest, render_the_same_command_writes_the_same_bytes) {
+  ASSERT_EQ(run_envcrust("render builtin:moebius --size 64x48 -q -o " + path("a.png")).exit_code, 0);
+  ASSERT_EQ(run_envcrust("render builtin:moebius --size 64x48 -q -o " + path("b.png")).exit_code, 0);
+  EXPECT_EQ(envcrust::io::read_binary_file(path("a.png")), envcrust::io::read_binary_file(path("b.png")));
+}
+
+// Panels of 80 x 60 in a 1 x 2 grid, gap 8, captions and title bands of 1.5 * 18 = 27 pixels.
+TEST_F(CliTest, render_several_inputs_become_captioned_panels) {
+  const auto r = run_envcrust("render builtin:sphere builtin:torus --size 80x60 --grid 1 2 --title T --json -o " +
+                              path("g.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(png_size(path("g.png")), std::make_pair(8u + 2u * 88u, 8u + 27u + 60u + 27u + 8u));
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["panels"].size(), 2u);
+  EXPECT_EQ(j["panels"][1]["caption"], "torus");
+  EXPECT_GT(j["panels"][0]["triangles"].get<int>(), 100);
+  EXPECT_EQ(j["panels"][0]["boundary_loops"], 0);
+}
+
+TEST_F(CliTest, render_a_point_file_with_balls_is_drawn) {
+  {
+    std::ofstream points(path("p.xyz"));
+    for (int i = 0; i < 50; ++i) points << i * 0.02 << " 0 " << (i % 5) * 0.1 << "\n";
+    std::ofstream balls(path("poles.txt"));
+    balls << "# x y z radius label\n0.5 0 0.2 0.2 in\n0.5 0 0.2 5 out\n";
+  }
+  const auto r = run_envcrust("render " + path("p.xyz") + " --balls " + path("poles.txt") +
+                              " --size 64x64 --json -o " + path("p.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["panels"][0]["points"], 50);
+  EXPECT_EQ(j["panels"][0]["balls"], 1);  // the outer ball is left out by default
+}
+
+TEST_F(CliTest, render_a_missing_font_leaves_captions_out_with_a_warning) {
+  const auto r = run_envcrust("render builtin:square --size 48x48 --caption sq --font " + path("none.ttf") +
+                              " -q -o " + path("s.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "envcrust: warning: font " + path("none.ttf") + " not found: captions and title left out\n");
+  EXPECT_EQ(png_size(path("s.png")), std::make_pair(8u + 48u + 8u, 8u + 48u + 27u + 8u));
+}
+
+TEST_F(CliTest, render_bad_input_is_named_and_no_png_is_written) {
+  const auto missing = run_envcrust("render " + path("missing.off") + " -o " + path("m.png"));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(missing.err, "envcrust: error: " + path("missing.off") + ": cannot open file\n");
+  {
+    std::ofstream bad(path("bad.off"));
+    bad << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n";
+  }
+  const auto bad = run_envcrust("render " + path("bad.off") + " -o " + path("m.png"));
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find(path("bad.off") + ":"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("m.png")));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);  // bad.off, no temp file
+}
+
+TEST_F(CliTest, render_an_empty_panel_is_refused_naming_the_input) {
+  {
+    std::ofstream points(path("p.xyz"));
+    points << "0 0 0\n1 0 0\n0 1 0\n";
+  }
+  const auto r = run_envcrust("render " + path("p.xyz") + " --points-as none -o " + path("e.png"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("p.xyz") +
+                       ": render: the scene is empty (no triangle, sphere or loop): nothing to draw\n");
+}
+
+TEST_F(CliTest, render_bad_size_and_view_are_usage_errors) {
+  const auto size = run_envcrust("render builtin:sphere --size 80 -o " + path("x.png"));
+  EXPECT_EQ(size.exit_code, 2);
+  EXPECT_EQ(size.err, "envcrust: usage error: --size: expected WIDTHxHEIGHT in pixels, e.g. 800x600, got '80'\n");
+  const auto view = run_envcrust("render builtin:sphere --view side -o " + path("x.png"));
+  EXPECT_EQ(view.exit_code, 2);
+  EXPECT_EQ(view.err,
+            "envcrust: usage error: --view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got 'side'\n");
+  const auto tiny = run_envcrust("render builtin:sphere --size 8x8 -o " + path("x.png"));
+  EXPECT_EQ(tiny.exit_code, 1);
+  EXPECT_EQ(tiny.err, "envcrust: error: RenderOptions.width must be in [16, 8192] (got 8)\n");
+  EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+}  // namespace
