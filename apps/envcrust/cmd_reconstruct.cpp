@@ -65,9 +65,12 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   nlohmann::json j = {{"rho", e.rho}, {"spacing", e.spacing}, {"samples", e.samples.size()},
                       {"candidates", e.candidates}, {"dropped_too_close", e.dropped_too_close},
                       {"input_largest_gap", e.input_coverage}};
-  if (e.reach.pairs_examined > 0)
+  if (e.reach.pairs_examined > 0) {
     j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
                   {"bottleneck", e.reach.bottleneck}};
+    j["noise"] = e.noise;
+    j["rho_from"] = e.is_rho_noise_bound ? "noise" : "reach";
+  }
   return j;
 }
 
@@ -137,8 +140,12 @@ void run_reconstruct(ReconstructCommand& cmd) {
   std::cout << "reconstructed " << cmd.input << " (" << loaded.samples.points.size() << " points) -> "
             << cmd.output << "\n";
   if (cmd.options.method == pipeline::Method::Envelope)
-    std::cout << "  envelope: rho " << result.envelope.rho << ", spacing " << result.envelope.spacing << ", "
-              << result.envelope.samples.size() << " samples\n";
+    std::cout << "  envelope: rho " << result.envelope.rho
+              << (result.envelope.reach.pairs_examined == 0 ? ""
+                  : result.envelope.is_rho_noise_bound     ? " (from the noise)"
+                                                           : " (from the reach)")
+              << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size()
+              << " samples\n";
   std::cout << "  time: envelope " << result.seconds.envelope << " s, power crust " << result.seconds.power_crust
             << " s, extraction " << result.seconds.extraction << " s\n";
   for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";

@@ -44,6 +44,7 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 1, "spacing_rel_rho", o.spacing_rel_rho);
   check(o.sheet_clearance > 0 && o.sheet_clearance <= 1, "sheet_clearance", o.sheet_clearance);
   check(o.rim_clearance > 0 && o.rim_clearance <= 1, "rim_clearance", o.rim_clearance);
+  check(o.min_rho_rel_noise >= 0, "min_rho_rel_noise", o.min_rho_rel_noise);
   check(o.reach_quantile >= 0 && o.reach_quantile < 1, "reach_quantile", o.reach_quantile);
   check(o.reach_min_pair_rel_spacing >= 0, "reach_min_pair_rel_spacing", o.reach_min_pair_rel_spacing);
 }
@@ -70,6 +71,15 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                      .seed = options.seed});
     const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
     out.rho = options.rho_rel_reach * capped;
+    out.noise = estimate_noise(surface.points);
+    if (options.min_rho_rel_noise * out.noise > out.rho) {
+      out.rho = options.min_rho_rel_noise * out.noise;
+      out.is_rho_noise_bound = true;
+      if (out.rho > capped)
+        out.warnings.push_back("the noise (sigma ~ " + format(out.noise) + ") needs rho >= " + format(out.rho) +
+                               ", more than the estimated reach " + format(capped) +
+                               ": the envelope may fold onto itself; denoise or sample denser");
+    }
   }
   out.spacing = options.spacing_rel_rho * out.rho;
 

@@ -47,7 +47,9 @@ namespace envcrust::extract {
 
 /// Cut the mesh along the zero set of a per-vertex function (linear on each triangle) and
 /// keep the part where it is <= 0. Crossing edges get one new vertex each (shared by both
-/// faces); kept pieces of quads are split into two triangles. Returns the new vertices.
+/// faces); kept pieces of quads are split into two triangles. A cut within 5% of an edge's
+/// end goes through that end instead (no duplicate vertices, no slivers). Returns the new
+/// vertices.
 std::vector<Index> trim_mesh(TaggedMesh& tagged, const std::vector<double>& level);
 
 }  // namespace envcrust::extract

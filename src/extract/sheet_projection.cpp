@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace envcrust::extract {
 namespace {
@@ -22,7 +23,7 @@ bool move_if_safe(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>
                   const Point3& target) {
   const Point3 start = m.vertices[v];
   for (double fraction : {1.0, 0.5}) {
-    const Point3 at = start + fraction * (target - start);
+    const Point3 at = fraction == 1.0 ? target : start + fraction * (target - start);
     bool ok = true;
     for (auto f : faces_of[v]) {
       const Vector3 before = face_normal(m, m.triangles[f], v, start);
@@ -61,15 +62,24 @@ struct BoundaryPolylines {
   std::vector<Point3> points;
   std::vector<std::size_t> curve_start, curve_of;  // per point: its curve; per curve: first point
   std::vector<std::size_t> curve_size;
+  std::vector<double> arc;           // per point: arc length from its curve's first point
+  std::vector<double> curve_length;  // per curve
 };
 
-Point3 onto_boundary(const Point3& x, const BoundaryPolylines& b, const NearestIndex& index) {
+/// The nearest point of a boundary curve, with its curve and arc-length position.
+struct CurvePoint {
+  Point3 point;
+  std::size_t curve = 0;
+  double arc = 0.0;
+};
+
+CurvePoint onto_boundary(const Point3& x, const BoundaryPolylines& b, const NearestIndex& index) {
   const std::size_t i = index.nearest(x).first;
   const std::size_t c = b.curve_of[i];
   const std::size_t start = b.curve_start[c], size = b.curve_size[c];
   const std::size_t local = i - start;
-  Point3 best = b.points[i];
-  double best_d = CGAL::squared_distance(x, best);
+  CurvePoint best{b.points[i], c, b.arc[i]};
+  double best_d = CGAL::squared_distance(x, best.point);
   for (std::size_t other : {(local + size - 1) % size, (local + 1) % size}) {
     const Kernel::Segment_3 seg(b.points[i], b.points[start + other]);
     if (seg.is_degenerate()) continue;
@@ -79,7 +89,10 @@ Point3 onto_boundary(const Point3& x, const BoundaryPolylines& b, const NearestI
     const double dist = CGAL::squared_distance(x, p);
     if (dist < best_d) {
       best_d = dist;
-      best = p;
+      // Going backwards from the first point wraps to the closing segment.
+      const double arc_other = other == 0 ? b.curve_length[c] : b.arc[start + other];
+      const double arc_here = local == 0 && other + 1 == size ? b.curve_length[c] : b.arc[i];
+      best = {p, c, arc_here + t * (arc_other - arc_here)};
     }
   }
   return best;
@@ -109,10 +122,17 @@ BoundaryPolylines polylines_of(const envelope::SurfaceSamples& surface) {
   for (std::size_t c = 0; c < surface.boundary.size(); ++c) {
     boundary.curve_start.push_back(boundary.points.size());
     boundary.curve_size.push_back(surface.boundary[c].vertices.size());
-    for (const auto& v : surface.boundary[c].vertices) {
-      boundary.points.push_back(v.position);
+    double arc = 0.0;
+    const auto& vertices = surface.boundary[c].vertices;
+    for (std::size_t k = 0; k < vertices.size(); ++k) {
+      if (k > 0) arc += std::sqrt(CGAL::squared_distance(vertices[k - 1].position, vertices[k].position));
+      boundary.points.push_back(vertices[k].position);
       boundary.curve_of.push_back(c);
+      boundary.arc.push_back(arc);
     }
+    if (!vertices.empty())
+      arc += std::sqrt(CGAL::squared_distance(vertices.back().position, vertices.front().position));
+    boundary.curve_length.push_back(arc);
   }
   return boundary;
 }
@@ -155,17 +175,56 @@ std::size_t trim_beyond_boundary(TaggedMesh& t, const envelope::SurfaceSamples& 
   for (Index v = 0; v < m.vertices.size(); ++v) {
     const auto [i, d] = index.nearest(m.vertices[v]);
     if (d > reach) continue;
-    const Point3 b = onto_boundary(m.vertices[v], boundary, index);
+    const Point3 b = onto_boundary(m.vertices[v], boundary, index).point;
     const Vector3 offset = m.vertices[v] - b;
-    double s = std::max(offset * conormals[i], offset * conormals_next[i]);
-    // A vertex exactly on the cut would give a zero-area piece: count it as inside.
-    if (std::abs(s) < 1e-12 * reach) s = -1e-12 * reach;
-    level[v] = s;
+    level[v] = std::max(offset * conormals[i], offset * conormals_next[i]);
   }
   const std::size_t before = m.triangles.size();
   trim_mesh(t, level);
   return before - std::min(before, m.triangles.size());
 }
+
+namespace {
+
+// Snapped border vertices whose order along their boundary curve goes against the order of
+// their mesh loop (neighbours swapped on the curve): the loop would cross itself on the
+// curve, which is planar for a cylinder's rim. Both ends of each backward step are listed.
+std::vector<Index> out_of_order_snaps(const TriangleMesh& m, const std::vector<std::optional<CurvePoint>>& snap,
+                                      const BoundaryPolylines& boundary) {
+  const auto topo = topology::analyze_topology(m, {.weld_identical_vertices = false});
+  std::vector<Index> bad;
+  for (const auto& loop : topo.boundary_loops) {
+    // The snapped vertices of the loop in order, and the signed steps between consecutive
+    // ones on the same curve (wrapped to half the curve's length).
+    std::vector<Index> snapped;
+    for (Index v : loop.vertices)
+      if (snap[v]) snapped.push_back(v);
+    if (snapped.size() < 3) continue;
+    std::vector<double> step(snapped.size(), 0.0);
+    double total = 0.0;
+    for (std::size_t k = 0; k < snapped.size(); ++k) {
+      const CurvePoint& a = *snap[snapped[k]];
+      const CurvePoint& b = *snap[snapped[(k + 1) % snapped.size()]];
+      if (a.curve != b.curve) continue;
+      const double length = boundary.curve_length[a.curve];
+      double d = std::fmod(b.arc - a.arc, length);
+      if (d > 0.5 * length) d -= length;
+      if (d < -0.5 * length) d += length;
+      step[k] = d;
+      total += d;
+    }
+    for (std::size_t k = 0; k < snapped.size(); ++k) {
+      const CurvePoint& a = *snap[snapped[k]];
+      const CurvePoint& b = *snap[snapped[(k + 1) % snapped.size()]];
+      if (a.curve != b.curve || step[k] * total > 0.0) continue;
+      bad.push_back(snapped[k]);
+      bad.push_back(snapped[(k + 1) % snapped.size()]);
+    }
+  }
+  return bad;
+}
+
+}  // namespace
 
 ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surface, double max_move) {
   ProjectionStats stats;
@@ -175,15 +234,31 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   const auto is_border = border_vertices(m);
   const BoundaryPolylines boundary = polylines_of(surface);
   const NearestIndex index(boundary.points);
+  const std::vector<Point3> before = m.vertices;
+  std::vector<std::optional<CurvePoint>> snap(m.vertices.size());
   for (Index v = 0; v < m.vertices.size(); ++v) {
     if (faces_of[v].empty() || !is_border[v]) continue;
-    const Point3 target = onto_boundary(m.vertices[v], boundary, index);
-    if (CGAL::squared_distance(target, m.vertices[v]) > max_move * max_move) continue;
-    if (move_if_safe(m, faces_of, v, target)) {
+    const CurvePoint target = onto_boundary(m.vertices[v], boundary, index);
+    if (CGAL::squared_distance(target.point, m.vertices[v]) > max_move * max_move) continue;
+    if (move_if_safe(m, faces_of, v, target.point) && m.vertices[v] == target.point) {
+      snap[v] = target;
       ++stats.moved;
     } else {
       ++stats.refused;
     }
+  }
+  // Undo the snaps that reverse the loop's order along the curve, until none is left.
+  for (int round = 0; round < 8; ++round) {
+    const auto bad = out_of_order_snaps(m, snap, boundary);
+    std::size_t undone = 0;
+    for (Index v : bad) {
+      if (!snap[v] || !move_if_safe(m, faces_of, v, before[v])) continue;
+      snap[v].reset();
+      ++undone;
+      --stats.moved;
+      ++stats.refused;
+    }
+    if (undone == 0) break;
   }
   return stats;
 }

@@ -5,8 +5,33 @@
 
 namespace envcrust::extract {
 
-std::vector<Index> trim_mesh(TaggedMesh& t, const std::vector<double>& level) {
+namespace {
+
+// A cut closer than this fraction of an edge to one of its ends goes through that end
+// instead: a new vertex there would be a duplicate of it (f * |b - a| below the rounding of
+// the coordinates) or bound a sliver.
+constexpr double kSnapFraction = 0.05;
+
+// Vertices that a cut passes within kSnapFraction of get level 0: on the cut, kept.
+std::vector<double> snap_levels(const TriangleMesh& m, std::vector<double> level) {
+  for (const auto& tri : m.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const Index a = tri[k], b = tri[(k + 1) % 3];
+      const double la = level[a], lb = level[b];
+      if ((la <= 0) == (lb <= 0)) continue;
+      const double f = la / (la - lb);
+      if (f < kSnapFraction) level[a] = 0.0;
+      else if (f > 1.0 - kSnapFraction) level[b] = 0.0;
+    }
+  }
+  return level;
+}
+
+}  // namespace
+
+std::vector<Index> trim_mesh(TaggedMesh& t, const std::vector<double>& raw_level) {
   auto& m = t.mesh;
+  const std::vector<double> level = snap_levels(m, raw_level);
   std::map<std::pair<Index, Index>, Index> cut_vertex;
   std::vector<Index> created;
   auto cut = [&](Index a, Index b) {
@@ -14,6 +39,8 @@ std::vector<Index> trim_mesh(TaggedMesh& t, const std::vector<double>& level) {
     const auto it = cut_vertex.find({key.first, key.second});
     if (it != cut_vertex.end()) return it->second;
     const double la = level[a], lb = level[b];
+    if (la == 0.0) return a;  // the cut passes through a snapped end
+    if (lb == 0.0) return b;
     const double f = la / (la - lb);  // la and lb have opposite signs
     const auto id = static_cast<Index>(m.vertices.size());
     m.vertices.push_back(m.vertices[a] + f * (m.vertices[b] - m.vertices[a]));
@@ -28,6 +55,7 @@ std::vector<Index> trim_mesh(TaggedMesh& t, const std::vector<double>& level) {
     int inside = 0;
     for (Index v : tri) inside += level[v] <= 0 ? 1 : 0;
     auto add = [&](Index a, Index b, Index c) {
+      if (a == b || b == c || a == c) return;  // a corner cut through a snapped vertex
       triangles.push_back({a, b, c});
       dots.push_back(t.face_dot[f]);
     };

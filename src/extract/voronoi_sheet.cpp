@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 
 namespace envcrust::extract {
@@ -72,15 +73,32 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     sheet.polygons.push_back(cells);
     sheet.polygon_dot.push_back(dot);
   }
-  // Compact: only cells on some polygon become vertices.
+  // Compact: only cells on some polygon become vertices. Adjacent cells with the same
+  // selected edges get the same position; they become one vertex (their Voronoi edge has
+  // length zero), so that no face of the sheet has a zero-length side.
   std::vector<Index> vertex_of(next_cell, kUnused);
+  std::map<Point3, Index> vertex_at;
   for (Index c = 0; c < next_cell; ++c) {
     if (midpoint_count[c] == 0) continue;
-    vertex_of[c] = static_cast<Index>(sheet.vertices.size());
-    sheet.vertices.push_back(CGAL::ORIGIN + midpoint_sum[c] / static_cast<double>(midpoint_count[c]));
+    const Point3 at = CGAL::ORIGIN + midpoint_sum[c] / static_cast<double>(midpoint_count[c]);
+    const auto [it, is_new] = vertex_at.try_emplace(at, static_cast<Index>(sheet.vertices.size()));
+    if (is_new) sheet.vertices.push_back(at);
+    vertex_of[c] = it->second;
   }
-  for (auto& polygon : sheet.polygons)
-    for (Index& c : polygon) c = vertex_of[c];
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < sheet.polygons.size(); ++i) {
+    auto& polygon = sheet.polygons[i];
+    std::vector<Index> distinct;
+    for (Index c : polygon)
+      if (distinct.empty() || distinct.back() != vertex_of[c]) distinct.push_back(vertex_of[c]);
+    while (distinct.size() > 1 && distinct.back() == distinct.front()) distinct.pop_back();
+    if (distinct.size() < 3) continue;  // collapsed to an edge
+    sheet.polygons[kept] = std::move(distinct);
+    sheet.polygon_dot[kept] = sheet.polygon_dot[i];
+    ++kept;
+  }
+  sheet.polygons.resize(kept);
+  sheet.polygon_dot.resize(kept);
   return sheet;
 }
 
