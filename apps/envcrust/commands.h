@@ -11,5 +11,6 @@ void register_reconstruct(CLI::App& app);
 void register_envelope(CLI::App& app);
 void register_powercrust(CLI::App& app);
 void register_render(CLI::App& app);
+void register_experiment(CLI::App& app);
 
 }  // namespace envcrust::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   envcrust::cli::register_envelope(app);
   envcrust::cli::register_powercrust(app);
   envcrust::cli::register_render(app);
+  envcrust::cli::register_experiment(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
