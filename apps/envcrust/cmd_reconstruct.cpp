@@ -64,11 +64,10 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
 nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   nlohmann::json j = {{"rho", e.rho}, {"spacing", e.spacing}, {"samples", e.samples.size()},
                       {"candidates", e.candidates}, {"dropped_too_close", e.dropped_too_close},
-                      {"input_largest_gap", e.input_coverage}};
+                      {"input_largest_gap", e.input_coverage}, {"noise", e.noise}};
   if (e.reach.pairs_examined > 0) {
     j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
                   {"bottleneck", e.reach.bottleneck}};
-    j["noise"] = e.noise;
     j["rho_from"] = e.is_rho_noise_bound ? "noise" : "reach";
   }
   return j;

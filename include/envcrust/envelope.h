@@ -52,7 +52,8 @@ struct NoiseOptions {
 
 /// Noise level sigma-hat of a sample: the median over points of the RMS distance of their
 /// k nearest neighbours to the plane fitted through them. Gaussian noise of sigma along the
-/// normal reads about 0.9 sigma with k = 16; exact samples read the curvature term
+/// normal reads about 0.8 sigma with k = 16 (the fit absorbs 3 of the 16 degrees of freedom,
+/// and the median lies below the mean); exact samples read the curvature term
 /// ~ kappa r^2 / 8 over a neighbourhood of radius r (tiny at usual densities).
 /// @throws InvalidOptions on neighbors < 4; InvalidInput with fewer than 4 points.
 double estimate_noise(const std::vector<Point3>& points, const NoiseOptions& options = {});
@@ -112,7 +113,7 @@ struct EnvelopeSamples {
   double rho = 0.0;
   double spacing = 0.0;            ///< Poisson-disk radius h actually used
   ReachEstimate reach;             ///< when rho was chosen automatically
-  double noise = 0.0;              ///< estimate_noise of the samples, when rho was automatic
+  double noise = 0.0;              ///< estimate_noise of the samples
   bool is_rho_noise_bound = false; ///< automatic rho was raised to min_rho_rel_noise * noise
   std::size_t candidates = 0;      ///< before thinning
   std::size_t dropped_too_close = 0;  ///< candidates nearer than the clearance to M

@@ -62,6 +62,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   validate(surface, options);
   EnvelopeSamples out;
   const double diag = mesh::bbox_diagonal(surface.points);
+  out.noise = surface.points.size() >= 4 ? estimate_noise(surface.points) : 0.0;
   if (options.rho) {
     out.rho = *options.rho;
   } else {
@@ -71,7 +72,6 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                      .seed = options.seed});
     const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
     out.rho = options.rho_rel_reach * capped;
-    out.noise = estimate_noise(surface.points);
     if (options.min_rho_rel_noise * out.noise > out.rho) {
       out.rho = options.min_rho_rel_noise * out.noise;
       out.is_rho_noise_bound = true;

@@ -21,6 +21,9 @@ void validate(const SheetOptions& o) {
   if (!(o.max_component_distance_rel_rho > 0)) fail("max_component_distance_rel_rho", o.max_component_distance_rel_rho);
   if (!(o.min_component_area_fraction >= 0 && o.min_component_area_fraction < 1))
     fail("min_component_area_fraction", o.min_component_area_fraction);
+  if (!(o.projection_neighbors >= 1)) fail("projection_neighbors", o.projection_neighbors);
+  if (!(o.noisy_projection_neighbors >= 1)) fail("noisy_projection_neighbors", o.noisy_projection_neighbors);
+  if (!(o.noisy_rel_rho >= 0)) fail("noisy_rel_rho", o.noisy_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
 }
 
@@ -53,7 +56,10 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   }
   compact_vertices(sheet);
   if (options.use_projection) {
-    const auto moved = project_onto_samples(sheet, surface, envelope.rho);
+    const bool is_noisy = envelope.noise > options.noisy_rel_rho * envelope.rho;
+    const auto moved = project_onto_samples(
+        sheet, surface, envelope.rho,
+        static_cast<unsigned>(is_noisy ? options.noisy_projection_neighbors : options.projection_neighbors));
     trim_beyond_boundary(sheet, surface, 2.0 * envelope.rho);
     // Trimming cuts off crumbs and leaves pinholes where single faces reached past the
     // boundary.

@@ -43,8 +43,9 @@ bool move_if_safe(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>
 
 // Offset of x from M estimated from the tangent planes of its nearest samples (normal lines
 // aligned with the nearest one), inverse-distance weighted.
-Point3 onto_tangent_planes(const Point3& x, const envelope::SurfaceSamples& s, const NearestIndex& index) {
-  const auto hits = index.nearest(x, 6);
+Point3 onto_tangent_planes(const Point3& x, const envelope::SurfaceSamples& s, const NearestIndex& index,
+                           unsigned neighbors) {
+  const auto hits = index.nearest(x, neighbors);
   const Vector3 reference = s.normals[hits.front().first];
   Vector3 shift(0, 0, 0);
   double weight = 0.0;
@@ -140,7 +141,7 @@ BoundaryPolylines polylines_of(const envelope::SurfaceSamples& surface) {
 }  // namespace
 
 ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSamples& surface,
-                                     double max_move) {
+                                     double max_move, unsigned neighbors) {
   ProjectionStats stats;
   auto& m = t.mesh;
   const auto faces_of = faces_of_vertices(m);
@@ -148,7 +149,7 @@ ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSampl
   const NearestIndex samples(surface.points);
   for (Index v = 0; v < m.vertices.size(); ++v) {
     if (faces_of[v].empty() || is_border[v]) continue;
-    const Point3 target = onto_tangent_planes(m.vertices[v], surface, samples);
+    const Point3 target = onto_tangent_planes(m.vertices[v], surface, samples, neighbors);
     if (CGAL::squared_distance(target, m.vertices[v]) > max_move * max_move) continue;
     if (move_if_safe(m, faces_of, v, target)) {
       ++stats.moved;

@@ -10,11 +10,11 @@ struct ProjectionStats {
   std::size_t refused = 0;
 };
 
-/// Interior (non-border) vertices move onto the weighted tangent planes of their 6 nearest
-/// samples when the move is below `max_move`; a move that would flip or collapse an incident
-/// face is halved, then refused.
+/// Interior (non-border) vertices move onto the weighted tangent planes of their `neighbors`
+/// nearest samples when the move is below `max_move`; a move that would flip or collapse an
+/// incident face is halved, then refused.
 ProjectionStats project_onto_samples(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
-                                     double max_move);
+                                     double max_move, unsigned neighbors);
 
 /// Cut away what lies beyond the boundary curves: the level (x - b) . c, b the nearest point of
 /// a boundary curve (within `reach`) and c its outward conormal, is trimmed at zero. The

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 
 using namespace envcrust;
 
@@ -132,4 +134,59 @@ TEST(Envelope, bad_options_and_inputs_are_refused) {
   } catch (const InvalidInput& e) {
     EXPECT_STREQ(e.what(), "envelope: 1 points but 0 normals");
   }
+}
+
+// Gaussian noise of sigma along the normal of a plane: each fit over k = 16 neighbours
+// removes 3 degrees of freedom (RMS residual sqrt(13/16) sigma = 0.90 sigma on average), and
+// the median of the per-point RMS lies below their mean: about 0.8 sigma.
+TEST(Noise, reads_the_sigma_of_noise_across_a_plane) {
+  std::mt19937_64 rng(7);
+  std::printf("seed 7\n");
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g(0.0, 0.004);
+  std::vector<Point3> points;
+  for (int i = 0; i < 20000; ++i) points.emplace_back(u(rng), u(rng), g(rng));
+  const double sigma = envelope::estimate_noise(points);
+  EXPECT_GT(sigma, 0.70 * 0.004);
+  EXPECT_LT(sigma, 0.90 * 0.004);
+}
+
+// Exact samples of a unit sphere: only the curvature term ~ r^2 / 8 over neighbourhoods of
+// radius r ~ 0.05 at 10k points is left, far below any noise that matters.
+TEST(Noise, is_near_zero_on_exact_samples) {
+  const auto s = exact_samples("sphere", 10000);
+  EXPECT_LT(envelope::estimate_noise(s.points), 1e-3);
+}
+
+TEST(Noise, refuses_bad_options_and_tiny_inputs) {
+  const std::vector<Point3> three{Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
+  try {
+    envelope::estimate_noise(three);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "noise: need at least 4 points");
+  }
+  try {
+    envelope::estimate_noise(exact_samples("sphere", 100).points, {.neighbors = 3});
+    FAIL() << "expected InvalidOptions";
+  } catch (const InvalidOptions& e) {
+    EXPECT_STREQ(e.what(), "NoiseOptions::neighbors must be at least 4 (got 3)");
+  }
+}
+
+// The automatic rho clears the noise: at sigma 0.25% of the diagonal the reach of noisy
+// pairs alone would give rho below 3 sigma, where the envelope sheets vanish.
+TEST(Envelope, automatic_rho_is_at_least_four_times_the_noise) {
+  const auto surface = surfaces::make_builtin("trefoil-ribbon");
+  surfaces::SampleOptions o;
+  o.count = 10000;
+  o.noise_rel_diag = 0.0025;
+  o.with_normals = true;
+  o.seed = 1;
+  const PointSet ps = surfaces::sample_surface(*surface, o);
+  envelope::SurfaceSamples s{ps.points, ps.normals, {}};
+  const auto env = envelope::sample_envelope(s);
+  EXPECT_GE(env.rho, 4.0 * env.noise * (1 - 1e-12));
+  const double sigma = 0.0025 * surfaces::bbox_diagonal(*surface);
+  EXPECT_NEAR(env.noise, 0.8 * sigma, 0.1 * sigma);
 }
