@@ -225,6 +225,9 @@ std::string outcome_caption(const analysis::AnalysisReport& report, bool is_knot
     if (knotted > 0) s += ", " + std::to_string(knotted) + " knotted";
   }
   if (!t.is_manifold()) s += ", non-manifold";
+  std::size_t untyped = 0;
+  for (const auto& loop : report.loops) untyped += !loop.knot;
+  if (untyped > 0) s += ", " + std::to_string(untyped) + " loops untyped";
   return s;
 }
 

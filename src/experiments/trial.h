@@ -84,7 +84,8 @@ PanelSpec mesh_panel(std::string caption, const TriangleMesh& mesh, const render
 PanelSpec points_panel(std::string caption, const std::vector<Point3>& points, const render::View& view,
                        render::Color color = {0.20f, 0.45f, 0.80f});
 
-/// Short caption of a trial: "χ 0, 2 loops" (+ ", 2 knotted" with `is_knotted`).
+/// Short caption of a trial: "χ 0, 2 loops" (+ ", 2 knotted" with `is_knotted`; loops the
+/// analyzer could not type are counted: ", 1 loops untyped").
 std::string outcome_caption(const analysis::AnalysisReport& report, bool is_knotted = false);
 
 /// Report progress and honour cancellation between steps.
