@@ -20,6 +20,7 @@ struct ExperimentCommand {
   std::string output;
   std::string data_dir = "../shared/data";
   std::string scan = "foot_vhacd";
+  std::string scan_reference = "foot_open.off";
   std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   bool list = false;
   experiments::ExperimentOptions options;
@@ -71,8 +72,7 @@ std::optional<experiments::ScanData> load_scan(const ExperimentCommand& cmd) {
   experiments::ScanData scan;
   scan.name = cmd.scan;
   scan.points = io::read_points(points);
-  const auto mesh = folder / (cmd.scan == "foot_vhacd" ? "foot_open.off" : "mesh.off");
-  if (std::filesystem::exists(mesh)) scan.reference = io::read_triangle_mesh(mesh);
+  if (!cmd.scan_reference.empty()) scan.reference = io::read_triangle_mesh(folder / cmd.scan_reference);
   return scan;
 }
 
@@ -168,6 +168,9 @@ void register_experiment(CLI::App& app) {
   sub->add_option("--data-dir", cmd->data_dir, "Folder of the shared scan data (scan experiment)")
       ->capture_default_str();
   sub->add_option("--scan", cmd->scan, "Data set folder under --data-dir for the scan experiment (points.xyz)")
+      ->capture_default_str();
+  sub->add_option("--scan-reference", cmd->scan_reference,
+                  "Ground-truth mesh of the scan, a file in its folder ('' for none: distances to the points)")
       ->capture_default_str();
   sub->add_flag(
       "--no-figures", [cmd](std::int64_t) { cmd->options.use_figures = false; }, "Tables only: no PNG figures");

@@ -30,6 +30,14 @@ TEST_F(ExperimentCli, list_names_every_experiment_with_its_figures) {
   EXPECT_NE(r.out.find("density: "), std::string::npos) << r.out;
 }
 
+TEST_F(ExperimentCli, help_shows_the_defaults_and_the_common_flags) {
+  const auto r = run_envcrust("experiment --help");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string flag : {"--quick", "--seed UINT=1", "--data-dir TEXT=../shared/data", "--panel-width INT=320",
+                                 "--json", "--quiet"})
+    EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+}
+
 TEST_F(ExperimentCli, quick_cylinder_writes_json_markdown_and_figures) {
   const auto r = run_envcrust("experiment cylinder --quick -q -o " + dir_.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
