@@ -4,12 +4,19 @@
 #include "envcrust/errors.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/Hilbert_sort_3.h>
+#include <CGAL/Hilbert_policy_tags.h>
+#include <CGAL/property_map.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <cmath>
 #include <limits>
+#include <algorithm>
+#include <array>
 #include <map>
+#include <numeric>
 #include <numbers>
 
 namespace envcrust::extract {
@@ -28,23 +35,53 @@ constexpr Index kUnused = std::numeric_limits<Index>::max();
 RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg) {
   const auto& samples = envelope.samples;
   if (samples.size() < 5) throw DegenerateInput("envelope has fewer than 5 samples");
-  std::vector<std::pair<Point3, Index>> input;
-  input.reserve(samples.size());
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    input.emplace_back(samples[i].position, static_cast<Index>(i));
-  Delaunay dt(input.begin(), input.end());
+  // Insert along a Hilbert curve, one point at a time from the previous one: the range
+  // constructor shuffles with CGAL's process-wide random generator, so a second call (or
+  // another thread) would number cells differently and the cleaning, which visits faces
+  // and vertices in order, would give a different sheet.
+  std::vector<Index> order(samples.size());
+  std::iota(order.begin(), order.end(), Index{0});
+  std::vector<Point3> positions;
+  positions.reserve(samples.size());
+  for (const auto& s : samples) positions.push_back(s.position);
+  using SortTraits = CGAL::Spatial_sort_traits_adapter_3<
+      Kernel, CGAL::Pointer_property_map<Point3>::type>;
+  const CGAL::Hilbert_sort_3<SortTraits, CGAL::Hilbert_sort_median_policy> hilbert(
+      SortTraits(CGAL::make_property_map(positions)));
+  hilbert(order.begin(), order.end());
+  Delaunay dt;
+  Delaunay::Vertex_handle hint;
+  for (Index i : order) {
+    hint = dt.insert(positions[i], hint == Delaunay::Vertex_handle() ? Delaunay::Cell_handle() : hint->cell());
+    hint->info() = i;
+  }
   if (dt.dimension() < 3) throw DegenerateInput("envelope samples are coplanar");
 
-  Index next_cell = 0;
-  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) c->info() = next_cell++;
+  // Everything below runs in an order fixed by the sample indices: CGAL's point location
+  // walks at random, so the storage order of cells (and of edges) differs between calls.
+  using CellKey = std::array<Index, 4>;
+  auto key_of = [](Delaunay::Cell_handle c) {
+    CellKey k{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<CellKey> cell_keys;
+  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) cell_keys.push_back(key_of(c));
+  std::sort(cell_keys.begin(), cell_keys.end());
+  const Index next_cell = static_cast<Index>(cell_keys.size());
+  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    c->info() = static_cast<Index>(std::lower_bound(cell_keys.begin(), cell_keys.end(), key_of(c)) - cell_keys.begin());
   for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
     if (dt.is_infinite(c)) c->info() = kUnused;
 
   const double max_dot = std::cos(min_angle_deg * std::numbers::pi / 180.0);
   RawSheet sheet;
-  std::vector<Vector3> midpoint_sum(next_cell, Vector3(0, 0, 0));
-  std::vector<std::uint32_t> midpoint_count(next_cell, 0);
-  std::vector<Index> cells;
+  struct CrossingEdge {
+    std::pair<Index, Index> key;  // sample indices, smaller first
+    std::vector<Index> cells;     // around the edge, turning positively about key.first -> key.second
+    double dot = 0.0;
+  };
+  std::vector<CrossingEdge> crossing;
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     ++sheet.delaunay_edges;
     const auto cell = e->first;
@@ -53,7 +90,7 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     const double dot = samples[p].direction * samples[q].direction;
     if (dot > max_dot) continue;
     ++sheet.crossing_edges;
-    cells.clear();
+    CrossingEdge edge{std::minmax(p, q), {}, dot};
     bool bounded = true;
     auto circulator = dt.incident_cells(*e);
     const auto start = circulator;
@@ -62,16 +99,27 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
         bounded = false;
         break;
       }
-      cells.push_back(circulator->info());
+      edge.cells.push_back(circulator->info());
     } while (++circulator != start);
-    if (!bounded || cells.size() < 3) continue;
-    const Vector3 mid = 0.5 * ((samples[p].position - CGAL::ORIGIN) + (samples[q].position - CGAL::ORIGIN));
-    for (Index c : cells) {
+    if (!bounded || edge.cells.size() < 3) continue;
+    // The circulator turns about the edge as stored (p -> q): make it p < q, and start at the
+    // smallest cell.
+    if (p > q) std::reverse(edge.cells.begin(), edge.cells.end());
+    std::rotate(edge.cells.begin(), std::min_element(edge.cells.begin(), edge.cells.end()), edge.cells.end());
+    crossing.push_back(std::move(edge));
+  }
+  std::sort(crossing.begin(), crossing.end(), [](const auto& a, const auto& b) { return a.key < b.key; });
+  std::vector<Vector3> midpoint_sum(next_cell, Vector3(0, 0, 0));
+  std::vector<std::uint32_t> midpoint_count(next_cell, 0);
+  for (auto& edge : crossing) {
+    const Vector3 mid = 0.5 * ((samples[edge.key.first].position - CGAL::ORIGIN) +
+                               (samples[edge.key.second].position - CGAL::ORIGIN));
+    for (Index c : edge.cells) {
       midpoint_sum[c] = midpoint_sum[c] + mid;
       ++midpoint_count[c];
     }
-    sheet.polygons.push_back(cells);
-    sheet.polygon_dot.push_back(dot);
+    sheet.polygons.push_back(std::move(edge.cells));
+    sheet.polygon_dot.push_back(edge.dot);
   }
   // Compact: only cells on some polygon become vertices. Adjacent cells with the same
   // selected edges get the same position; they become one vertex (their Voronoi edge has

@@ -5,6 +5,7 @@
 #include "envcrust/surfaces.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -121,4 +122,21 @@ TEST(SheetOfNoisySamples, issue_5_has_no_coincident_vertices_or_zero_area_faces)
     ASSERT_TRUE(loop.knot.has_value());
     EXPECT_EQ(knots::to_string(loop.knot->type), "trefoil");
   }
+}
+
+// The same input gives the same sheet, in a second call of one process and on one thread
+// (CGAL's range insertion shuffles with a process-wide generator; the extraction inserts
+// along a Hilbert curve instead).
+TEST(SheetOfBuiltin, is_the_same_on_a_second_call_and_on_one_thread) {
+  const auto surface = surfaces::make_builtin("moebius");
+  const auto samples = exact_samples(*surface, 3000);
+  const auto env = envelope::sample_envelope(samples);
+  const auto first = extract::extract_sheet(env, samples);
+  const auto second = extract::extract_sheet(env, samples);
+  EXPECT_EQ(first.mesh.vertices, second.mesh.vertices);
+  EXPECT_EQ(first.mesh.triangles, second.mesh.triangles);
+  tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  const auto serial = extract::extract_sheet(env, samples);
+  EXPECT_EQ(first.mesh.vertices, serial.mesh.vertices);
+  EXPECT_EQ(first.mesh.triangles, serial.mesh.triangles);
 }
