@@ -35,10 +35,8 @@ constexpr Index kUnused = std::numeric_limits<Index>::max();
 RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg) {
   const auto& samples = envelope.samples;
   if (samples.size() < 5) throw DegenerateInput("envelope has fewer than 5 samples");
-  // Insert along a Hilbert curve, one point at a time from the previous one: the range
-  // constructor shuffles with CGAL's process-wide random generator, so a second call (or
-  // another thread) would number cells differently and the cleaning, which visits faces
-  // and vertices in order, would give a different sheet.
+  // Insert along a Hilbert curve, each point located from the previous one (what the range
+  // constructor does, without its shuffle by CGAL's process-wide random generator).
   std::vector<Index> order(samples.size());
   std::iota(order.begin(), order.end(), Index{0});
   std::vector<Point3> positions;
