@@ -187,6 +187,34 @@ std::size_t trim_beyond_boundary(TaggedMesh& t, const envelope::SurfaceSamples& 
 
 namespace {
 
+// The trimmed border zig-zags where the cut crosses small triangles, and can step backwards
+// along the curve; on a planar rim (the cylinder's) such a step is a true self-crossing of
+// the loop once the border lies in the plane. Two Jacobi rounds of moving each border
+// vertex halfway to the midpoint of its loop neighbours iron the steps out before the snap.
+// Vertices within two border edges of a corner of the curves (the square's) stay put, or
+// the corner would be rounded off.
+void smooth_border_loops(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>& faces_of,
+                         const std::vector<Point3>& corners) {
+  for (int round = 0; round < 2; ++round) {
+    const auto topo = topology::analyze_topology(m, {.weld_identical_vertices = false});
+    for (const auto& loop : topo.boundary_loops) {
+      const std::size_t n = loop.vertices.size();
+      if (n < 4) continue;
+      std::vector<Point3> target(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Point3& prev = m.vertices[loop.vertices[(i + n - 1) % n]];
+        const Point3& next = m.vertices[loop.vertices[(i + 1) % n]];
+        const Point3& at = m.vertices[loop.vertices[i]];
+        target[i] = at + 0.5 * (CGAL::midpoint(prev, next) - at);
+        const double reach2 = CGAL::squared_distance(prev, at) + CGAL::squared_distance(at, next);
+        for (const Point3& corner : corners)  // a handful (four for the square)
+          if (2.0 * CGAL::squared_distance(corner, at) < reach2) target[i] = at;
+      }
+      for (std::size_t i = 0; i < n; ++i) move_if_safe(m, faces_of, loop.vertices[i], target[i]);
+    }
+  }
+}
+
 // Snapped border vertices whose order along their boundary curve goes against the order of
 // their mesh loop (neighbours swapped on the curve): the loop would cross itself on the
 // curve, which is planar for a cylinder's rim. Both ends of each backward step are listed.
@@ -235,6 +263,11 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   const auto is_border = border_vertices(m);
   const BoundaryPolylines boundary = polylines_of(surface);
   const NearestIndex index(boundary.points);
+  std::vector<Point3> corners;
+  for (const auto& c : surface.boundary)
+    for (const auto& v : c.vertices)
+      if (v.is_corner) corners.push_back(v.position);
+  smooth_border_loops(m, faces_of, corners);
   const std::vector<Point3> before = m.vertices;
   std::vector<std::optional<CurvePoint>> snap(m.vertices.size());
   for (Index v = 0; v < m.vertices.size(); ++v) {
