@@ -3,6 +3,7 @@
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 #include "envcrust/surfaces.h"
+#include "fixtures/surface_samples.h"
 
 #include <gtest/gtest.h>
 
@@ -15,15 +16,7 @@ using namespace envcrust;
 namespace {
 
 envelope::SurfaceSamples exact_samples(const std::string& name, std::size_t n, std::uint64_t seed = 1) {
-  const auto surface = surfaces::make_builtin(name);
-  surfaces::SampleOptions o;
-  o.count = n;
-  o.with_normals = true;
-  o.seed = seed;
-  const PointSet ps = surfaces::sample_surface(*surface, o);
-  envelope::SurfaceSamples s{ps.points, ps.normals, {}};
-  s.boundary = surfaces::boundary_curves(*surface, 0.01 * surfaces::bbox_diagonal(*surface));
-  return s;
+  return fixtures::builtin_samples(name, n, 0.0, seed, 0.01);
 }
 
 // Distance from x to the open cylinder of radius 1, z in [-1, 1].
@@ -177,16 +170,10 @@ TEST(Noise, refuses_bad_options_and_tiny_inputs) {
 // The automatic rho clears the noise: at sigma 0.25% of the diagonal the reach of noisy
 // pairs alone would give rho below 3 sigma, where the envelope sheets vanish.
 TEST(Envelope, automatic_rho_is_at_least_four_times_the_noise) {
-  const auto surface = surfaces::make_builtin("trefoil-ribbon");
-  surfaces::SampleOptions o;
-  o.count = 10000;
-  o.noise_rel_diag = 0.0025;
-  o.with_normals = true;
-  o.seed = 1;
-  const PointSet ps = surfaces::sample_surface(*surface, o);
-  envelope::SurfaceSamples s{ps.points, ps.normals, {}};
+  auto s = fixtures::builtin_samples("trefoil-ribbon", 10000, 0.0025, 1);
+  s.boundary.clear();  // the noise floor does not depend on the boundary
   const auto env = envelope::sample_envelope(s);
   EXPECT_GE(env.rho, 4.0 * env.noise * (1 - 1e-12));
-  const double sigma = 0.0025 * surfaces::bbox_diagonal(*surface);
+  const double sigma = 0.0025 * surfaces::bbox_diagonal(*surfaces::make_builtin("trefoil-ribbon"));
   EXPECT_NEAR(env.noise, 0.8 * sigma, 0.1 * sigma);
 }

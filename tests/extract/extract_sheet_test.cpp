@@ -3,6 +3,7 @@
 #include "envcrust/analysis.h"
 #include "envcrust/extract.h"
 #include "envcrust/surfaces.h"
+#include "fixtures/surface_samples.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -20,13 +21,7 @@ struct Case {
 };
 
 envelope::SurfaceSamples exact_samples(const surfaces::Surface& surface, std::size_t n) {
-  surfaces::SampleOptions o;
-  o.count = n;
-  o.with_normals = true;
-  const PointSet ps = surfaces::sample_surface(surface, o);
-  envelope::SurfaceSamples s{ps.points, ps.normals, {}};
-  s.boundary = surfaces::boundary_curves(surface, 0.005 * surfaces::bbox_diagonal(surface));
-  return s;
+  return fixtures::builtin_samples(surface.name(), n);
 }
 
 }  // namespace
@@ -94,16 +89,8 @@ INSTANTIATE_TEST_SUITE_P(
 // trim cuts through a vertex's rounding; the trefoil ribbon at 0.25% noise had 58 pairs of
 // coincident vertices bounding zero-area faces, which made its boundary loops touch.
 TEST(SheetOfNoisySamples, issue_5_has_no_coincident_vertices_or_zero_area_faces) {
-  const auto surface = surfaces::make_builtin("trefoil-ribbon");
-  surfaces::SampleOptions o;
-  o.count = 10000;
-  o.noise_rel_diag = 0.0025;
-  o.with_normals = true;
-  o.seed = 3;
-  std::printf("seed %llu\n", static_cast<unsigned long long>(o.seed));
-  const PointSet ps = surfaces::sample_surface(*surface, o);
-  envelope::SurfaceSamples samples{ps.points, ps.normals, {}};
-  samples.boundary = surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface));
+  std::printf("seed 3\n");
+  const auto samples = fixtures::builtin_samples("trefoil-ribbon", 10000, 0.0025, 3);
   const auto env = envelope::sample_envelope(samples);
   const auto sheet = extract::extract_sheet(env, samples);
   const auto report = analysis::analyze_mesh(sheet.mesh);
@@ -145,16 +132,8 @@ TEST(SheetOfBuiltin, is_the_same_on_a_second_call_and_on_one_thread) {
 // curve and, lying in the rim plane, crossed itself: the analyzer found no generic
 // projection and left the loop's knot type unknown (noisy 10k samples, seed 3).
 TEST(SheetOfNoisySamples, issue_5_cylinder_rims_do_not_cross_themselves) {
-  const auto surface = surfaces::make_builtin("cylinder");
-  surfaces::SampleOptions o;
-  o.count = 10000;
-  o.noise_rel_diag = 0.0025;
-  o.with_normals = true;
-  o.seed = 3;
-  std::printf("seed %llu\n", static_cast<unsigned long long>(o.seed));
-  const PointSet ps = surfaces::sample_surface(*surface, o);
-  envelope::SurfaceSamples samples{ps.points, ps.normals, {}};
-  samples.boundary = surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface));
+  std::printf("seed 3\n");
+  const auto samples = fixtures::builtin_samples("cylinder", 10000, 0.0025, 3);
   envelope::EnvelopeOptions eo;
   eo.seed = 3;
   const auto sheet = extract::extract_sheet(envelope::sample_envelope(samples, eo), samples);
