@@ -24,6 +24,8 @@ struct ReconstructCommand {
   std::string reference;
   std::string report_file;
   bool no_analysis = false;
+  bool use_remesh = false;
+  remesh::RemeshOptions remesh;  // used with --remesh
   BuiltinSampling sampling;
   pipeline::ReconstructOptions options;
   CommonFlags common;
@@ -76,6 +78,7 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
 void run_reconstruct(ReconstructCommand& cmd) {
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
+  if (cmd.use_remesh) cmd.options.remesh = cmd.remesh;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
   // Estimated normals scatter the per-sample reach values: take the 5th percentile.
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
@@ -101,7 +104,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     j["envelope"] = envelope_json(result.envelope);
   }
   j["seconds"] = {{"envelope", result.seconds.envelope}, {"power_crust", result.seconds.power_crust},
-                  {"extraction", result.seconds.extraction}};
+                  {"extraction", result.seconds.extraction}, {"remesh", result.seconds.remesh}};
   if (result.sheet_stats) {
     const auto& s = *result.sheet_stats;
     j["sheet"] = {{"delaunay_edges", s.delaunay_edges}, {"crossing_edges", s.crossing_edges},
@@ -110,6 +113,13 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"vertices_split", s.vertices_split}, {"holes_filled", s.holes_filled},
                   {"vertices_projected", s.vertices_projected},
                   {"projections_refused", s.projections_refused}};
+  }
+  if (result.remesh_stats) {
+    const auto& s = *result.remesh_stats;
+    j["remesh"] = {{"is_remeshed", s.is_remeshed}, {"faces_before", s.faces_before},
+                   {"faces_after", s.faces_after}, {"target_edge_length", s.target_edge_length},
+                   {"min_angle_deg_before", s.min_angle_deg_before},
+                   {"min_angle_deg_after", s.min_angle_deg_after}, {"seconds", s.seconds}};
   }
   if (result.envelope_crust) {
     const auto crust = topology::analyze_topology(*result.envelope_crust);
@@ -147,6 +157,10 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << " samples\n";
   std::cout << "  time: envelope " << result.seconds.envelope << " s, power crust " << result.seconds.power_crust
             << " s, extraction " << result.seconds.extraction << " s\n";
+  if (const auto& s = result.remesh_stats; s && s->is_remeshed)
+    std::cout << "  remesh: " << s->faces_before << " -> " << s->faces_after << " faces (target edge "
+              << s->target_edge_length << "), min angle " << s->min_angle_deg_before << " -> "
+              << s->min_angle_deg_after << " deg, " << s->seconds << " s\n";
   for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
   if (report) print_analysis(std::cout, cmd.output, *report);
 }
@@ -197,6 +211,20 @@ void register_reconstruct(CLI::App& app) {
   sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
+  sub->add_flag("--remesh", cmd->use_remesh,
+                "Remesh the result isotropically (keeps topology and boundary; skipped for non-orientable results)");
+  sub->add_option_function<double>(
+         "--remesh-edge", [cmd](double length) { cmd->remesh.target_edge_length = length; },
+         "With --remesh: target edge length (default: --remesh-edge-rel-median x the median edge)");
+  sub->add_option("--remesh-edge-rel-median", cmd->remesh.edge_length_rel_median,
+                  "With --remesh: target edge length as a multiple of the median edge")->capture_default_str();
+  sub->add_option("--remesh-iterations", cmd->remesh.iterations, "With --remesh: remeshing rounds")
+      ->capture_default_str();
+  const std::map<std::string, remesh::BoundaryMode> boundary_modes = {{"resample", remesh::BoundaryMode::Resample},
+                                                                      {"keep", remesh::BoundaryMode::Keep}};
+  sub->add_option("--remesh-boundary", cmd->remesh.boundary,
+                  "With --remesh: resample (default: border resampled along itself) or keep (every border vertex kept)")
+      ->transform(CLI::CheckedTransformer(boundary_modes, CLI::ignore_case));
   sub->add_option("-r,--reference", cmd->reference,
                   "Reference for distances (default: the exact surface for builtin inputs, else the input points)");
   sub->add_flag("--no-analysis", cmd->no_analysis, "Skip the analysis of the output");

@@ -6,6 +6,7 @@
 #include "envcrust/extract.h"
 #include "envcrust/power_crust.h"
 #include "envcrust/progress.h"
+#include "envcrust/remesh.h"
 
 #include <optional>
 #include <string>
@@ -35,11 +36,14 @@ struct ReconstructOptions {
   /// Also run the Power Crust on the envelope samples and report its topology as a
   /// self-check (chi(E) = 2 chi(M), METHOD.md F3). Costs about one more reconstruction.
   bool use_envelope_crust_check = false;
+  /// Remesh the result isotropically as a last step (keeps its topology and boundary; skipped
+  /// with a warning for non-orientable or non-manifold results). nullopt: no remeshing.
+  std::optional<remesh::RemeshOptions> remesh;
 };
 
 /// Seconds spent per stage.
 struct StageTimes {
-  double envelope = 0, power_crust = 0, extraction = 0;
+  double envelope = 0, power_crust = 0, extraction = 0, remesh = 0;
 };
 
 /// Result of reconstruct.
@@ -49,6 +53,7 @@ struct ReconstructResult {
   std::optional<extract::SheetStats> sheet_stats;
   std::optional<powercrust::PowerCrustStats> power_crust_stats;
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
+  std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
   StageTimes seconds;
   std::vector<std::string> warnings;
 };

@@ -10,6 +10,19 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The optional last step: remesh out.mesh in place (the input comes back on a skip).
+void remesh_result(ReconstructResult& out, const std::optional<remesh::RemeshOptions>& options,
+                   const Progress& progress) {
+  if (!options) return;
+  progress.report("remesh", 0.0);
+  auto r = remesh::remesh(out.mesh, *options);
+  out.mesh = std::move(r.mesh);
+  out.remesh_stats = r.stats;
+  out.seconds.remesh = r.stats.seconds;
+  for (auto& w : r.warnings) out.warnings.push_back(std::move(w));
+  progress.report("remesh", 1.0);
+}
+
 }  // namespace
 
 TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
@@ -33,6 +46,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     out.power_crust_stats = pc.stats;
     out.warnings = std::move(pc.warnings);
     progress.report("power crust", 1.0);
+    remesh_result(out, options.remesh, progress);
     return out;
   }
 
@@ -68,6 +82,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     for (auto& w : sheet.warnings) out.warnings.push_back(std::move(w));
     progress.report("medial sheet", 1.0);
   }
+  remesh_result(out, options.remesh, progress);
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 using envcrust::testing::CliTest;
@@ -148,6 +149,33 @@ TEST_F(CliTest, reconstruct_keeps_the_open_cylinder_open) {
   // The written file holds the same surface.
   const auto again = run_envcrust("analyze " + path("c.ply") + " --json");
   EXPECT_EQ(nlohmann::json::parse(again.out)["boundary_loops"], 2);
+}
+
+TEST_F(CliTest, reconstruct_with_remesh_reports_faces_and_analyzes_the_remeshed_mesh) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -n 5000 --remesh -o " + path("c.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& m = j["remesh"];
+  EXPECT_EQ(m["is_remeshed"], true);
+  EXPECT_LT(3 * m["faces_after"].get<std::size_t>(), m["faces_before"].get<std::size_t>());
+  EXPECT_GT(m["min_angle_deg_after"].get<double>(), m["min_angle_deg_before"].get<double>());
+  EXPECT_GE(j["seconds"]["remesh"].get<double>(), 0.0);
+  const auto& a = j["analysis"];  // of the remeshed mesh, the one written
+  EXPECT_EQ(a["faces"], m["faces_after"]);
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 2);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+  const auto again = run_envcrust("analyze " + path("c.ply") + " --json");
+  EXPECT_EQ(nlohmann::json::parse(again.out)["faces"], m["faces_after"]);
+  // A Moebius band is written as extracted, with the warning.
+  const auto moebius = run_envcrust("reconstruct builtin:moebius -n 3000 --remesh --remesh-edge 0.1 --no-analysis -o " +
+                                    path("m.ply") + " --json");
+  ASSERT_EQ(moebius.exit_code, 0) << moebius.err;
+  const auto mj = nlohmann::json::parse(moebius.out);
+  EXPECT_EQ(mj["remesh"]["is_remeshed"], false);
+  const auto& w = mj["warnings"];
+  EXPECT_NE(std::find(w.begin(), w.end(), "remeshing skipped: the mesh is not orientable"), w.end()) << w;
 }
 
 TEST_F(CliTest, reconstruct_moebius_is_non_orientable_with_one_boundary) {

@@ -1,0 +1,69 @@
+// Optional last stage: isotropic remeshing of the reconstruction (CGAL's
+// Polygon_mesh_processing::isotropic_remeshing) that keeps its topology and boundary loops.
+#pragma once
+
+#include "envcrust/types.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envcrust::remesh {
+
+/// What happens to the boundary loops.
+enum class BoundaryMode {
+  /// Border edges are split and collapsed along the input's border polyline (CGAL's default
+  /// for patch borders): the border is resampled at the target length, its new vertices lie
+  /// on the old polyline, and no border vertex leaves it.
+  Resample,
+  /// Every input border vertex is kept: border edges longer than 4/3 of the target are split
+  /// first, then all border edges are protected (neither split nor collapsed again). The
+  /// border stays as dense as the input's, which leaves thin "ears" along it (three
+  /// consecutive border vertices): the smallest angle is not improved there.
+  Keep
+};
+
+/// Options of remesh.
+struct RemeshOptions {
+  /// Target edge length, in the mesh's units, > 0. nullopt: `edge_length_rel_median` times
+  /// the median edge length of the input.
+  std::optional<double> target_edge_length;
+  /// Used when target_edge_length is unset, > 0. The sheet's median edge is about rho/9
+  /// (several Voronoi vertices per envelope sample); 3 (a target of about 0.35 rho) cuts the
+  /// faces 6-8 fold and keeps the distance to the true surface within the sheet's own
+  /// (measured at 10k samples: README).
+  double edge_length_rel_median = 3.0;
+  /// Split / collapse / flip / relax / project rounds, 1..100. CGAL's example uses 3.
+  int iterations = 3;
+  BoundaryMode boundary = BoundaryMode::Resample;
+};
+
+/// What remesh did.
+struct RemeshStats {
+  bool is_remeshed = false;          ///< false: the input came back unchanged (see warnings)
+  std::size_t faces_before = 0, faces_after = 0;
+  double target_edge_length = 0.0;   ///< the length used
+  double min_angle_deg_before = 0.0, min_angle_deg_after = 0.0;  ///< smallest triangle angle
+  double seconds = 0.0;
+};
+
+/// The remeshed mesh.
+struct RemeshResult {
+  TriangleMesh mesh;
+  RemeshStats stats;
+  std::vector<std::string> warnings;
+};
+
+/// Remesh a manifold, orientable triangle mesh isotropically, keeping its Euler
+/// characteristic, boundary loops, components and orientability: if any of them changes, the
+/// input is returned unchanged with a warning. Non-orientable or non-manifold meshes are
+/// returned unchanged with a warning ("remeshing skipped: the mesh is not orientable"), since
+/// CGAL's halfedge meshes cannot hold them.
+/// @throws InvalidOptions when a field is out of range (the message names it and its value).
+/// @throws InvalidInput when a face index is out of range.
+RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options = {});
+
+/// Smallest interior angle over all non-degenerate triangles, in degrees (0 for no triangle).
+double min_angle_deg(const TriangleMesh& mesh);
+
+}  // namespace envcrust::remesh

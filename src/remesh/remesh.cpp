@@ -1,0 +1,88 @@
+// remesh: validate, check the input can be remeshed, run CGAL, undo on a topology change.
+#include "envcrust/remesh.h"
+
+#include "envcrust/errors.h"
+#include "envcrust/topology.h"
+#include "isotropic.h"
+
+#include <CGAL/exceptions.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace envcrust::remesh {
+namespace {
+
+void validate(const RemeshOptions& o) {
+  auto fail = [](const std::string& field, const std::string& range, double value) {
+    std::ostringstream s;
+    s << "RemeshOptions::" << field << " must be " << range << " (got " << value << ")";
+    throw InvalidOptions(s.str());
+  };
+  if (o.target_edge_length && !(std::isfinite(*o.target_edge_length) && *o.target_edge_length > 0))
+    fail("target_edge_length", "positive", *o.target_edge_length);
+  if (!(std::isfinite(o.edge_length_rel_median) && o.edge_length_rel_median > 0))
+    fail("edge_length_rel_median", "positive", o.edge_length_rel_median);
+  if (o.iterations < 1 || o.iterations > 100) fail("iterations", "in 1..100", o.iterations);
+}
+
+// The numbers remeshing must not change, as "chi 0, 1 component, 2 loops, orientable".
+std::string describe(const topology::MeshTopology& t) {
+  std::ostringstream s;
+  s << "chi " << t.euler_characteristic << ", " << t.components.size() << " component(s), "
+    << t.boundary_loops.size() << " boundary loop(s), " << (t.is_orientable ? "orientable" : "non-orientable")
+    << (t.is_manifold() ? "" : ", non-manifold");
+  return s.str();
+}
+
+}  // namespace
+
+RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options) {
+  validate(options);
+  const auto t0 = std::chrono::steady_clock::now();
+  RemeshResult out;
+  out.mesh = mesh;
+  out.stats.faces_before = out.stats.faces_after = mesh.triangles.size();
+  out.stats.min_angle_deg_before = out.stats.min_angle_deg_after = min_angle_deg(mesh);
+  auto finish = [&](std::string warning) {
+    if (!warning.empty()) out.warnings.push_back(std::move(warning));
+    out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+
+  const auto before = topology::analyze_topology(mesh);
+  if (before.faces == 0) return finish("remeshing skipped: the mesh has no triangles");
+  if (!before.is_manifold())
+    return finish("remeshing skipped: the mesh is not a manifold (" + std::to_string(before.non_manifold_edges) +
+                  " non-manifold edges, " + std::to_string(before.non_manifold_vertices) +
+                  " non-manifold vertices)");
+  if (!before.is_orientable) return finish("remeshing skipped: the mesh is not orientable");
+  if (before.degenerate_faces + before.duplicate_faces + before.welded_vertices > 0)
+    return finish("remeshing skipped: the mesh has degenerate or duplicate faces or repeated vertices");
+
+  const double target = options.target_edge_length.value_or(options.edge_length_rel_median * median_edge_length(mesh));
+  out.stats.target_edge_length = target;
+  if (!(target > 0)) return finish("remeshing skipped: the mesh has no edge of positive length");
+
+  TriangleMesh remeshed;
+  try {
+    remeshed = isotropic_remesh(mesh, target, options.iterations, options.boundary);
+  } catch (const NumericalFailure& e) {
+    return finish(std::string("remeshing skipped: ") + e.what());
+  } catch (const CGAL::Failure_exception& e) {
+    return finish("remeshing skipped: CGAL failed (" + e.message() + ")");
+  }
+  const auto after = topology::analyze_topology(remeshed);
+  if (describe(after) != describe(before) || after.degenerate_faces > 0)
+    return finish("remeshing undone: it changed the mesh from " + describe(before) + " to " + describe(after) +
+                  (after.degenerate_faces > 0 ? " with " + std::to_string(after.degenerate_faces) + " degenerate faces"
+                                              : std::string()));
+  out.mesh = std::move(remeshed);
+  out.stats.is_remeshed = true;
+  out.stats.faces_after = out.mesh.triangles.size();
+  out.stats.min_angle_deg_after = min_angle_deg(out.mesh);
+  return finish("");
+}
+
+}  // namespace envcrust::remesh
