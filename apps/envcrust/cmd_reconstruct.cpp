@@ -12,6 +12,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 
 namespace envcrust::cli {
 namespace {
@@ -66,7 +67,8 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
 nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   nlohmann::json j = {{"rho", e.rho}, {"spacing", e.spacing}, {"samples", e.samples.size()},
                       {"candidates", e.candidates}, {"dropped_too_close", e.dropped_too_close},
-                      {"input_largest_gap", e.input_coverage}, {"noise", e.noise}};
+                      {"input_largest_gap", e.input_coverage}, {"min_rho_for_gaps", e.min_rho_for_gaps},
+                      {"noise", e.noise}};
   if (e.reach.pairs_examined > 0) {
     j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
                   {"bottleneck", e.reach.bottleneck}};
@@ -84,7 +86,16 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
-  if (result.mesh.triangles.empty()) throw NumericalFailure("the reconstruction is empty");
+  if (result.mesh.triangles.empty()) {
+    const auto& e = result.envelope;
+    std::ostringstream reason;
+    reason << cmd.input << ": the reconstruction is empty";
+    if (cmd.options.method == pipeline::Method::Envelope && e.rho < e.min_rho_for_gaps)
+      reason << ": rho " << e.rho << " is too small for the input's gaps (up to " << e.input_coverage
+             << "); use --rho " << e.min_rho_for_gaps << " or more, or input with gaps below "
+             << e.input_coverage * e.rho / e.min_rho_for_gaps;
+    throw NumericalFailure(reason.str());
+  }
   io::write_mesh(cmd.output, result.mesh);
   if (!cmd.envelope_output.empty()) {
     PointSet env;

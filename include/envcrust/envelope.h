@@ -118,6 +118,9 @@ struct EnvelopeSamples {
   std::size_t candidates = 0;      ///< before thinning
   std::size_t dropped_too_close = 0;  ///< candidates nearer than the clearance to M
   double input_coverage = 0.0;     ///< largest gap of the input samples seen by the sheets
+  /// Smallest rho whose envelope bridges the largest gap (input_coverage / 2.5); a smaller rho
+  /// leaves holes, and a warning says which rho or which input spacing would work.
+  double min_rho_for_gaps = 0.0;
   std::vector<std::string> warnings;
   [[nodiscard]] std::vector<Point3> points() const;
 };

@@ -226,6 +226,28 @@ TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// issue 5: rho too small for the sampling leaves holes everywhere; the error says which rho
+// or which input spacing would work, and the rho it names does work.
+TEST_F(CliTest, reconstruct_with_rho_below_the_gaps_says_which_rho_works) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho 0.03 -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+  const std::string prefix =
+      "envcrust: error: builtin:cylinder: the reconstruction is empty: rho 0.03 is too small for the "
+      "input's gaps (up to ";
+  ASSERT_EQ(r.err.rfind(prefix, 0), 0u) << r.err;
+  const auto at = r.err.find("use --rho ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const double suggested = std::stod(r.err.substr(at + 10));
+  EXPECT_GT(suggested, 0.03);
+  const auto ok = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho " + std::to_string(suggested * 1.01) +
+                               " --json -o " + path("y.ply"));
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const auto j = nlohmann::json::parse(ok.out);
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+}
+
 TEST_F(CliTest, reconstruct_warns_when_rho_exceeds_the_reach) {
   const auto r = run_envcrust("reconstruct builtin:cylinder -n 3000 --rho 1.5 --no-analysis -o " + path("x.ply") + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
