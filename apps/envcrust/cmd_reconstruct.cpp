@@ -22,6 +22,7 @@ struct ReconstructCommand {
   std::string output;
   std::string rho = "auto";
   std::string envelope_output;
+  std::string boundary_output;
   std::string reference;
   std::string report_file;
   bool no_analysis = false;
@@ -62,10 +63,36 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
   sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
                "Point files: do not detect boundary curves (a closed surface)");
+  sub.add_option("--boundary-min-width", cmd.sampling.boundary.min_loop_width,
+                 "Point files: drop detected loops narrower than this many local spacings "
+                 "(sampling gaps, not holes); 0 keeps all")->capture_default_str();
+  sub.add_flag("--rho-adaptive",
+               [&cmd](std::int64_t) { cmd.options.envelope.rho_mode = envelope::RhoMode::Adaptive; },
+               "Vary rho with the local feature size: rho(p) = alpha lfs(p), clamped to "
+               "[--rho-min-rel * rho, rho] (rho = --rho), Lipschitz --rho-lipschitz");
+  sub.add_option("--rho-alpha", cmd.options.envelope.adaptive_rho_rel_lfs,
+                 "Adaptive rho: rho(p) = alpha * local reach")->capture_default_str();
+  sub.add_option("--rho-min-rel", cmd.options.envelope.adaptive_min_rel_rho,
+                 "Adaptive rho: smallest rho as a fraction of rho")->capture_default_str();
+  sub.add_option("--rho-lipschitz", cmd.options.envelope.adaptive_lipschitz,
+                 "Adaptive rho: Lipschitz constant along M")->capture_default_str();
+  sub.add_option("--boundary-out", cmd.boundary_output,
+                 "Also write the boundary curves used (detected or read), all vertices as one point "
+                 "file (.xyz/.ply; normals = outward conormals)");
+}
+
+void write_boundary_points(const std::string& path, const envelope::SurfaceSamples& samples) {
+  PointSet points;
+  for (const auto& curve : samples.boundary)
+    for (const auto& b : curve.vertices) {
+      points.points.push_back(b.position);
+      points.normals.push_back(b.conormal);
+    }
+  io::write_points(path, points);
 }
 
 nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
-  nlohmann::json j = {{"rho", e.rho}, {"spacing", e.spacing}, {"samples", e.samples.size()},
+  nlohmann::json j = {{"rho", e.rho}, {"rho_min", e.rho_min}, {"spacing", e.spacing}, {"samples", e.samples.size()},
                       {"candidates", e.candidates}, {"dropped_too_close", e.dropped_too_close},
                       {"input_largest_gap", e.input_coverage}, {"min_rho_for_gaps", e.min_rho_for_gaps},
                       {"noise", e.noise}};
@@ -85,6 +112,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   // Estimated normals scatter the per-sample reach values: take the 5th percentile.
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
+  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
   if (result.mesh.triangles.empty()) {
     const auto& e = result.envelope;
@@ -120,6 +148,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     const auto& s = *result.sheet_stats;
     j["sheet"] = {{"delaunay_edges", s.delaunay_edges}, {"crossing_edges", s.crossing_edges},
                   {"polygons", s.polygons}, {"components_dropped", s.components_dropped},
+                  {"far_faces_removed", s.far_faces_removed},
                   {"non_manifold_faces_removed", s.non_manifold_faces_removed},
                   {"vertices_split", s.vertices_split}, {"holes_filled", s.holes_filled},
                   {"vertices_projected", s.vertices_projected},
@@ -160,10 +189,12 @@ void run_reconstruct(ReconstructCommand& cmd) {
   std::cout << "reconstructed " << cmd.input << " (" << loaded.samples.points.size() << " points) -> "
             << cmd.output << "\n";
   if (cmd.options.method == pipeline::Method::Envelope)
-    std::cout << "  envelope: rho " << result.envelope.rho
+    std::cout << "  envelope: rho " << (result.envelope.local_rho.empty() ? "" : "adaptive, at most ")
+              << result.envelope.rho
               << (result.envelope.reach.pairs_examined == 0 ? ""
                   : result.envelope.is_rho_noise_bound     ? " (from the noise)"
                                                            : " (from the reach)")
+              << (result.envelope.local_rho.empty() ? "" : ", at least " + std::to_string(result.envelope.rho_min))
               << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size()
               << " samples\n";
   std::cout << "  time: envelope " << result.seconds.envelope << " s, power crust " << result.seconds.power_crust
@@ -182,6 +213,7 @@ void run_envelope(ReconstructCommand& cmd) {
   cmd.options.envelope.seed = cmd.sampling.seed;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
+  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   const auto env = envelope::sample_envelope(loaded.samples, cmd.options.envelope);
   PointSet points;
   for (const auto& s : env.samples) {

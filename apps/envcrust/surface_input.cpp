@@ -95,7 +95,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   out.samples.points = std::move(points.points);
   out.samples.normals = std::move(points.normals);
   if (sampling.detect_boundary) {
-    auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals);
+    auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, sampling.boundary);
     out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                         std::to_string(detection.dropped_loops) + " short loops dropped)");
     out.samples.boundary = std::move(detection.curves);

@@ -2,6 +2,7 @@
 // boundary curves): a built-in surface, a point file, or a triangle mesh.
 #pragma once
 
+#include "envcrust/boundary.h"
 #include "envcrust/envelope.h"
 
 #include <cstdint>
@@ -16,6 +17,7 @@ struct BuiltinSampling {
   double noise_rel_diag = 0.0;
   std::uint64_t seed = 1;
   bool detect_boundary = true;   ///< point files: find boundary curves (off: treat as closed)
+  boundary::BoundaryOptions boundary;  ///< point files: options of the boundary detector
 };
 
 /// Samples of M and how they were obtained (for the report). Point files get their normal

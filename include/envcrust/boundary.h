@@ -57,6 +57,13 @@ struct BoundaryOptions {
   /// hole of circumference < 20 s is also below the envelope's resolution (rho ~ 4.5 s fills
   /// holes shorter than 2 pi rho, METHOD section 5).
   double min_loop_length = 20.0;
+  /// Loops narrower than this many local spacings are sampling gaps, not holes, and are
+  /// dropped (counted in dropped_loops). Width = 4 area / perimeter of the fitted loop (a disc
+  /// reads its diameter, a slot of width w about 2w); local spacing = median over the loop's
+  /// points of the distance to their 6th neighbour. 0 (default) keeps every loop. Measured:
+  /// the foot scan's ankle reads 13.4, two unsampled stripes on its sole 4.6 and 5.3; the
+  /// bunny's base holes 7.3, 8.2 and 3.9 (two holes fused into one loop). >= 0.
+  double min_loop_width = 0.0;
   /// Output curve vertex spacing (arc length, absolute units, > 0); nullopt: spacing s.
   std::optional<double> curve_spacing;
   /// Move the output curves by this many s along their outward conormal, in [-5, 5]. The

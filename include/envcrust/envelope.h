@@ -58,6 +58,57 @@ struct NoiseOptions {
 /// @throws InvalidOptions on neighbors < 4; InvalidInput with fewer than 4 points.
 double estimate_noise(const std::vector<Point3>& points, const NoiseOptions& options = {});
 
+/// Options of estimate_local_reach.
+struct LocalReachOptions {
+  /// Pairs farther apart than this are not examined (absolute units, > 0). A pair at distance
+  /// d reads at least d / 2, so values above radius / 2 are not seen: pass twice the largest
+  /// reach that matters (adaptive rho: 2 rho_max / rho_rel_lfs).
+  double search_radius = 1.0;
+  /// Shorter pairs are skipped unless they cross to another sheet (see crossing_min_cos):
+  /// estimated normals and noise make short same-sheet pairs read far too small (see
+  /// ReachOptions::min_pair_distance). Absolute units, >= 0.
+  double min_pair_distance = 0.0;
+  /// A short pair still counts when |(q - p) . n_p| >= this * |q - p|: a chord nearly along the
+  /// normal goes to a facing sheet (a gap between toes), which is the feature to resolve, and
+  /// reads at most |q - p| / (2 * this). Same-sheet neighbours have |cos| ~ the normal error.
+  /// Range (0, 1]. 0.7: 45 degrees.
+  double crossing_min_cos = 0.7;
+  /// The per-sample value is the median over this many nearest samples (itself included) of
+  /// their smallest pair values, which drops single outlier pairs. >= 1.
+  int smoothing_neighbors = 8;
+};
+
+/// Per-sample local reach (feature size): Federer's value |q - p|^2 / (2 |(q - p) . n_p|)
+/// minimised over the samples q within the search radius (METHOD.md §2), median-smoothed over
+/// neighbours; infinite where no pair constrains it (a flat piece). One value per point.
+/// @throws InvalidInput on mismatched sizes; InvalidOptions on an option out of range.
+std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const LocalReachOptions& options = {});
+
+/// Options of adaptive_rho.
+struct AdaptiveRhoOptions {
+  double rho_rel_lfs = 0.5;      ///< alpha of rho(p) = alpha lfs(p) (METHOD.md §2), (0, 1)
+  double rho_min = 0.0;          ///< lower clamp (absolute, >= 0)
+  double rho_max = 1.0;          ///< upper clamp (absolute, > 0, >= rho_min)
+  /// Lipschitz constant L of the result over the k-nearest-neighbour graph: rho(p) <=
+  /// rho(q) + L |p - q| (METHOD.md §2: 0.3; |grad rho| < 1 keeps M the inner medial axis).
+  /// Range [0, 1).
+  double lipschitz = 0.3;
+  int neighbors = 12;            ///< k of the graph the Lipschitz bound is enforced on, >= 1
+};
+
+/// rho(p) = clamp(alpha lfs(p), rho_min, rho_max), then made L-Lipschitz by a Dijkstra pass
+/// rho(p) <- min_q rho(q) + L |p - q| over the kNN graph (it only lowers values; the result
+/// stays >= rho_min). @param lfs one value per point (infinite allowed).
+/// @throws InvalidInput on mismatched sizes; InvalidOptions on an option out of range.
+std::vector<double> adaptive_rho(const std::vector<Point3>& points, const std::vector<double>& lfs,
+                                 const AdaptiveRhoOptions& options = {});
+
+/// How rho is chosen along M.
+enum class RhoMode : std::uint8_t {
+  Uniform,   ///< one rho everywhere (EnvelopeOptions::rho or automatic)
+  Adaptive   ///< rho(p) from the local reach, at most the uniform rho (the paper's foot, §4.2)
+};
+
 /// Which part of E a sample lies on.
 enum class EnvelopePart : std::uint8_t {
   Sheet,   ///< p +- rho n(p)
@@ -105,13 +156,27 @@ struct EnvelopeOptions {
   double sheet_clearance = 0.9;
   double rim_clearance = 0.97;   ///< same for rim and corner samples
   std::uint64_t seed = 1;        ///< shuffling of the Poisson-disk thinning
+  /// Uniform, or Adaptive: the uniform rho (given or automatic) becomes rho_max, and each
+  /// sample gets adaptive_rho(estimate_local_reach) clamped to [adaptive_min_rel_rho rho_max,
+  /// rho_max] (and above the noise floor); spacing, rims and clearance follow the local rho.
+  RhoMode rho_mode = RhoMode::Uniform;
+  /// Adaptive mode: lower clamp as a fraction of rho_max, (0, 1]. 0.25: the extraction needs
+  /// envelope samples at 0.25 rho, so a smaller rho costs (rho_max / rho)^2 more samples.
+  double adaptive_min_rel_rho = 0.25;
+  /// Adaptive mode: alpha and L of adaptive_rho (METHOD.md §2: 0.5 and 0.3).
+  double adaptive_rho_rel_lfs = 0.5;
+  double adaptive_lipschitz = 0.3;
 };
 
 /// The sampled envelope.
 struct EnvelopeSamples {
   std::vector<EnvelopeSample> samples;
-  double rho = 0.0;
-  double spacing = 0.0;            ///< Poisson-disk radius h actually used
+  double rho = 0.0;                ///< the uniform rho; in adaptive mode the largest local rho
+  double spacing = 0.0;            ///< Poisson-disk radius h actually used (at rho)
+  /// Adaptive mode: rho per surface sample (same order as SurfaceSamples::points); empty in
+  /// uniform mode. The envelope sample made from sample i lies at local_rho[i] from M.
+  std::vector<double> local_rho;
+  double rho_min = 0.0;            ///< smallest local rho (= rho in uniform mode)
   ReachEstimate reach;             ///< when rho was chosen automatically
   double noise = 0.0;              ///< estimate_noise of the samples
   bool is_rho_noise_bound = false; ///< automatic rho was raised to min_rho_rel_noise * noise

@@ -19,11 +19,22 @@ struct SheetOptions {
   /// A component of the sheet is kept when the median distance of its vertices to the surface
   /// samples is below this fraction of rho (the outer medial axis of E lies >= R - rho away).
   double max_component_distance_rel_rho = 0.5;
+  /// Faces farther than this many (local) rho from every surface sample are dropped first
+  /// (and at least the sample's distance to its 8th neighbour, for sparse input): the medial
+  /// axis of the region M encloses (the inside of a scanned foot, >= R - rho away) otherwise
+  /// stays attached to the sheet. The sheet itself lies within rho^2/64 of M inside and
+  /// overshoots the boundary by up to ~0.6 rho (METHOD.md §5 c1). >= 0; 0 disables.
+  double max_face_distance_rel_rho = 2.0;
   /// Components with less than this fraction of the total area are dropped.
   double min_component_area_fraction = 0.01;
   /// Boundary loops shorter than this many rho are holes below the envelope's resolution
   /// and are filled (a true boundary is much longer than 2 pi rho). 0 disables.
   double fill_loops_shorter_than_rel_rho = 2.0 * 3.141592653589793;
+  /// After projection, fill border loops that run along no boundary curve (fewer than half
+  /// their vertices within 2 rho of one): holes where the input has a sampling gap wider than
+  /// the envelope bridges (the foot scan's sole). Off when the boundary curves are incomplete
+  /// and the sheet should show the rest (holes still filled then: only short ones).
+  bool use_fill_away_from_boundary = true;
   /// Move interior vertices onto the tangent plane of their nearest surface sample and
   /// border vertices onto the nearest boundary curve, when no incident face flips.
   bool use_projection = true;
@@ -44,6 +55,7 @@ struct SheetStats {
   std::size_t crossing_edges = 0;       ///< edges selected by the angle test
   std::size_t polygons = 0;             ///< dual Voronoi polygons kept
   std::size_t components_dropped = 0;   ///< outer medial axis pieces and crumbs
+  std::size_t far_faces_removed = 0;      ///< faces beyond max_face_distance_rel_rho
   std::size_t non_manifold_faces_removed = 0;
   std::size_t vertices_split = 0;       ///< pinched vertices split into one per fan
   std::size_t holes_filled = 0;

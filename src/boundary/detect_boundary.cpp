@@ -5,6 +5,7 @@
 #include "envcrust/errors.h"
 #include "envcrust/normals.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace envcrust::boundary {
@@ -52,6 +53,7 @@ void validate(const BoundaryOptions& o) {
     require(*o.curve_spacing > 0 && std::isfinite(*o.curve_spacing), "curve_spacing",
             *o.curve_spacing, "> 0");
   }
+  require(o.min_loop_width >= 0 && std::isfinite(o.min_loop_width), "min_loop_width", o.min_loop_width, ">= 0");
   require(o.outward_offset >= -5 && o.outward_offset <= 5, "outward_offset", o.outward_offset,
           "in [-5, 5]");
 }
@@ -76,6 +78,35 @@ std::vector<Vector3> unit_normals(const std::vector<Point3>& points,
     out.push_back(normal_lines[i] / len);
   }
   return out;
+}
+
+// 4 area / perimeter of a closed polyline (area = norm of its vector area): a disc's
+// diameter, about twice the width of a long slot.
+double loop_width(const Polyline& curve) {
+  Vector3 area(0, 0, 0);
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < curve.size(); ++i) {
+    const Point3& a = curve[i];
+    const Point3& b = curve[(i + 1) % curve.size()];
+    area = area + 0.5 * CGAL::cross_product(a - CGAL::ORIGIN, b - CGAL::ORIGIN);
+    perimeter += detail::length(b - a);
+  }
+  return perimeter > 0 ? 4.0 * detail::length(area) / perimeter : 0.0;
+}
+
+// Median over the component's points of the distance to their 6th neighbour.
+double local_spacing(const std::vector<Point3>& points, const detail::PointIndex& index,
+                     const std::vector<std::size_t>& component) {
+  std::vector<double> d;
+  d.reserve(component.size());
+  for (const std::size_t i : component) {
+    const auto near = index.nearest(points[i], 7);
+    d.push_back(detail::length(points[near.back()] - points[i]));
+  }
+  if (d.empty()) return 0.0;
+  const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
+  std::nth_element(d.begin(), mid, d.end());
+  return *mid;
 }
 
 }  // namespace
@@ -114,15 +145,20 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points,
       ++out.dropped_loops;
       continue;
     }
+    Polyline curve = detail::resample_closed(line.points, s);
+    curve = detail::smooth_closed(curve, options.smoothing_half_window);
+    curve = detail::resample_closed(curve, output_spacing);
+    if (options.min_loop_width > 0 &&
+        loop_width(curve) < options.min_loop_width * local_spacing(points, index, component)) {
+      ++out.dropped_loops;
+      continue;
+    }
     const std::size_t id = out.curves.size();
     if (line.end_gap > options.close_distance * s) {
       out.warnings.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
                              format_number(line.end_gap / s) +
                              " spacings apart; closed across the gap");
     }
-    Polyline curve = detail::resample_closed(line.points, s);
-    curve = detail::smooth_closed(curve, options.smoothing_half_window);
-    curve = detail::resample_closed(curve, output_spacing);
     BoundaryCurve framed = detail::frame_curve(curve, points, normals, index, candidates,
                                                component, id, out.warnings);
     if (options.outward_offset != 0) {

@@ -38,8 +38,8 @@ void add_pair(std::vector<EnvelopeSample>& out, const Point3& g, const Vector3& 
 
 }  // namespace
 
-std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, double rho, double h,
-                                             double per_h2, std::uint64_t seed,
+std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std::vector<double>& rho,
+                                             double spacing_rel_rho, double per_h2, std::uint64_t seed,
                                              double& largest_gap) {
   NeighborSearch::Tree tree(s.points.begin(), s.points.end());
   tree.build();
@@ -69,6 +69,7 @@ std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, double rho
     NeighborSearch search(tree, p, std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(s.points.size())));
     for (const auto& hit : search) rk2 = std::max(rk2, hit.second);
     const double rk = std::sqrt(rk2);
+    const double h = spacing_rel_rho * rho[i];
     largest_gap = std::max(largest_gap, rk);
     // Disks of radius r_k overlap about k times, so m generators per disk give a density of
     // about k m / (pi r_k^2); ask for per_h2 / h^2.
@@ -76,25 +77,30 @@ std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, double rho
     const int m = std::clamp(static_cast<int>(std::ceil(wanted)), 1, 64);
     const Vector3 e1 = perpendicular(n);
     const Vector3 e2 = CGAL::cross_product(n, e1);
-    add_pair(out, p, n, rho, EnvelopePart::Sheet, -1);
+    add_pair(out, p, n, rho[i], EnvelopePart::Sheet, -1);
     for (int k = 1; k < m; ++k) {
       const double r = rk * std::sqrt(uniform01(rng));
       const double a = 2.0 * std::numbers::pi * uniform01(rng);
       const Point3 g = p + r * std::cos(a) * e1 + r * std::sin(a) * e2;
-      if (!beyond_boundary(g)) add_pair(out, g, n, rho, EnvelopePart::Sheet, -1);
+      if (!beyond_boundary(g)) add_pair(out, g, n, rho[i], EnvelopePart::Sheet, -1);
     }
   }
   return out;
 }
 
-std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& boundary, double rho,
-                                           double step) {
+std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& boundary,
+                                           const std::vector<std::vector<double>>& rim_rho,
+                                           double spacing_rel_rho, double step_rel_h) {
   std::vector<EnvelopeSample> out;
-  const int arcs = std::max(4, static_cast<int>(std::ceil(std::numbers::pi * rho / step)));
   for (std::size_t ci = 0; ci < boundary.size(); ++ci) {
     const auto& vertices = boundary[ci].vertices;
     const int curve = static_cast<int>(ci);
     for (std::size_t i = 0; i < vertices.size(); ++i) {
+      // The segment from vertex i takes vertex i's rho (adaptive rho is Lipschitz, so its
+      // neighbour's differs little).
+      const double rho = rim_rho[ci][i];
+      const double step = step_rel_h * (spacing_rel_rho * rho);
+      const int arcs = std::max(4, static_cast<int>(std::ceil(std::numbers::pi * rho / step)));
       const BoundaryVertex& a = vertices[i];
       const BoundaryVertex& b = vertices[(i + 1) % vertices.size()];
       const double len = std::sqrt(CGAL::squared_distance(a.position, b.position));

@@ -61,4 +61,51 @@ std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, do
   return kept;
 }
 
+std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, const std::vector<double>& radii,
+                                           std::uint64_t seed) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937_64 rng(seed);
+  for (std::size_t i = order.size(); i > 1; --i)
+    std::swap(order[i - 1], order[static_cast<std::size_t>(uniform01(rng) * static_cast<double>(i))]);
+  double largest = 0.0;
+  for (double r : radii) largest = std::max(largest, r);
+  if (!(largest > 0)) return {};
+  // Cells of the largest radius / sqrt 3 hold several kept points where radii are small; a
+  // query looks ceil(r / cell) cells around (at most 2, as in the uniform version).
+  const double cell = largest / std::sqrt(3.0);
+  std::unordered_map<CellKey, std::vector<std::size_t>, CellHash> grid;
+  grid.reserve(points.size() / 4 + 16);
+  auto key_of = [&](const Point3& p) {
+    return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)),
+                   static_cast<std::int64_t>(std::floor(p.y() / cell)),
+                   static_cast<std::int64_t>(std::floor(p.z() / cell))};
+  };
+  std::vector<std::size_t> kept;
+  for (std::size_t index : order) {
+    const Point3& p = points[index];
+    const double r2 = radii[index] * radii[index];
+    const auto reach = static_cast<std::int64_t>(std::ceil(radii[index] / cell));
+    const CellKey k = key_of(p);
+    bool free = true;
+    for (std::int64_t dx = -reach; dx <= reach && free; ++dx)
+      for (std::int64_t dy = -reach; dy <= reach && free; ++dy)
+        for (std::int64_t dz = -reach; dz <= reach && free; ++dz) {
+          const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
+          if (it == grid.end()) continue;
+          for (std::size_t other : it->second)
+            if (CGAL::squared_distance(points[other], p) <= r2) {
+              free = false;
+              break;
+            }
+        }
+    if (free) {
+      grid[k].push_back(index);
+      kept.push_back(index);
+    }
+  }
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
 }  // namespace envcrust::envelope

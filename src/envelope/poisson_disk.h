@@ -14,4 +14,10 @@ namespace envcrust::envelope {
 std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, double radius,
                                            std::uint64_t seed);
 
+/// Variable radius: a point is kept when no kept point lies within its own radius (one per
+/// point, > 0 for points to be kept). Equal radii give the same subset as the overload above
+/// only in distribution, not point for point (different grid).
+std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, const std::vector<double>& radii,
+                                           std::uint64_t seed);
+
 }  // namespace envcrust::envelope

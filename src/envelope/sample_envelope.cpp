@@ -2,6 +2,7 @@
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
+#include "envcrust/nearest_index.h"
 
 #include "envelope_candidates.h"
 #include "poisson_disk.h"
@@ -11,6 +12,7 @@
 #include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -52,6 +54,27 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   check(o.min_rho_rel_noise >= 0, "min_rho_rel_noise", o.min_rho_rel_noise);
   check(o.reach_quantile >= 0 && o.reach_quantile < 1, "reach_quantile", o.reach_quantile);
   check(o.reach_min_pair_rel_spacing >= 0, "reach_min_pair_rel_spacing", o.reach_min_pair_rel_spacing);
+  check(o.adaptive_min_rel_rho > 0 && o.adaptive_min_rel_rho <= 1, "adaptive_min_rel_rho", o.adaptive_min_rel_rho);
+  check(o.adaptive_rho_rel_lfs > 0 && o.adaptive_rho_rel_lfs < 1, "adaptive_rho_rel_lfs", o.adaptive_rho_rel_lfs);
+  check(o.adaptive_lipschitz >= 0 && o.adaptive_lipschitz < 1, "adaptive_lipschitz", o.adaptive_lipschitz);
+}
+
+// Adaptive mode: rho per sample from the local reach, between the floor and rho_max. Pairs
+// shorter than the automatic reach's minimum pair length count only when they cross to a
+// facing sheet (LocalReachOptions::crossing_min_cos).
+std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptions& o, double rho_max,
+                              double noise) {
+  const double spacing = CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(surface.points, 6);
+  LocalReachOptions reach;
+  reach.search_radius = 2.0 * rho_max / o.adaptive_rho_rel_lfs;
+  reach.min_pair_distance = o.reach_min_pair_rel_spacing * spacing;
+  const auto lfs = estimate_local_reach(surface, reach);
+  AdaptiveRhoOptions a;
+  a.rho_rel_lfs = o.adaptive_rho_rel_lfs;
+  a.lipschitz = o.adaptive_lipschitz;
+  a.rho_max = rho_max;
+  a.rho_min = std::min(rho_max, std::max(o.adaptive_min_rel_rho * rho_max, o.min_rho_rel_noise * noise));
+  return adaptive_rho(surface.points, lfs, a);
 }
 
 }  // namespace
@@ -87,12 +110,30 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     }
   }
   out.spacing = options.spacing_rel_rho * out.rho;
+  out.rho_min = out.rho;
+
+  std::vector<double> rho(surface.points.size(), out.rho);
+  if (options.rho_mode == RhoMode::Adaptive) {
+    out.local_rho = local_rho(surface, options, out.rho, out.noise);
+    rho = out.local_rho;
+    out.rho_min = *std::min_element(rho.begin(), rho.end());
+  }
+  std::vector<std::vector<double>> rim_rho;
+  if (options.rho_mode == RhoMode::Adaptive && !surface.boundary.empty()) {
+    const NearestIndex index(surface.points);
+    for (const auto& c : surface.boundary) {
+      rim_rho.emplace_back();
+      for (const auto& b : c.vertices) rim_rho.back().push_back(rho[index.nearest(b.position).first]);
+    }
+  } else {
+    for (const auto& c : surface.boundary) rim_rho.emplace_back(c.vertices.size(), out.rho);
+  }
 
   double largest_gap = 0.0;
   std::vector<EnvelopeSample> candidates =
-      sheet_candidates(surface, out.rho, out.spacing, kCandidatesPerH2, options.seed, largest_gap);
+      sheet_candidates(surface, rho, options.spacing_rel_rho, kCandidatesPerH2, options.seed, largest_gap);
   out.input_coverage = largest_gap;
-  const auto rims = rim_candidates(surface.boundary, out.rho, kRimStepRelH * out.spacing);
+  const auto rims = rim_candidates(surface.boundary, rim_rho, options.spacing_rel_rho, kRimStepRelH);
   candidates.insert(candidates.end(), rims.begin(), rims.end());
   out.candidates = candidates.size();
 
@@ -104,13 +145,18 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   NeighborSearch::Tree tree(reference.begin(), reference.end());
   tree.build();
   std::vector<char> keep(candidates.size(), 1);
+  const bool is_adaptive = options.rho_mode == RhoMode::Adaptive;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       NeighborSearch search(tree, candidates[i].position, 1);
       const double d = std::sqrt(search.begin()->second);
       const double clearance =
           candidates[i].part == EnvelopePart::Sheet ? options.sheet_clearance : options.rim_clearance;
-      if (d < clearance * out.rho) keep[i] = 0;
+      // The candidate's own rho: the distance to its generator.
+      const double rho_i = is_adaptive
+                               ? std::sqrt(CGAL::squared_distance(candidates[i].position, candidates[i].generator))
+                               : out.rho;
+      if (d < clearance * rho_i) keep[i] = 0;
     }
   });
   std::size_t sheet_total = 0, sheet_dropped = 0;
@@ -134,8 +180,17 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   std::vector<Point3> positions;
   positions.reserve(kept_candidates.size());
   for (const auto& c : kept_candidates) positions.push_back(c.position);
-  for (std::size_t index : poisson_disk_thin(positions, out.spacing, options.seed))
-    out.samples.push_back(kept_candidates[index]);
+  if (is_adaptive) {
+    std::vector<double> radii;
+    radii.reserve(kept_candidates.size());
+    for (const auto& c : kept_candidates)
+      radii.push_back(options.spacing_rel_rho * std::sqrt(CGAL::squared_distance(c.position, c.generator)));
+    for (std::size_t index : poisson_disk_thin(positions, radii, options.seed))
+      out.samples.push_back(kept_candidates[index]);
+  } else {
+    for (std::size_t index : poisson_disk_thin(positions, out.spacing, options.seed))
+      out.samples.push_back(kept_candidates[index]);
+  }
   out.min_rho_for_gaps = largest_gap / kGapsPerRho;
   if (out.rho < out.min_rho_for_gaps) {
     out.warnings.push_back("the input has gaps of " + format(largest_gap) + " (rho is " + format(out.rho) +

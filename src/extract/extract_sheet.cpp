@@ -6,6 +6,9 @@
 #include "sheet_projection.h"
 #include "voronoi_sheet.h"
 
+#include "envcrust/nearest_index.h"
+
+#include <algorithm>
 #include <sstream>
 
 namespace envcrust::extract {
@@ -24,7 +27,24 @@ void validate(const SheetOptions& o) {
   if (!(o.projection_neighbors >= 1)) fail("projection_neighbors", o.projection_neighbors);
   if (!(o.noisy_projection_neighbors >= 1)) fail("noisy_projection_neighbors", o.noisy_projection_neighbors);
   if (!(o.noisy_rel_rho >= 0)) fail("noisy_rel_rho", o.noisy_rel_rho);
+  if (!(o.max_face_distance_rel_rho >= 0)) fail("max_face_distance_rel_rho", o.max_face_distance_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
+}
+
+// Per surface sample: how far a face of the sheet may lie from it, the larger of
+// max_face_distance_rel_rho times its rho and its distance to the 8th nearest sample (where
+// the input is sparse, the sheet spans gaps wider than rho).
+std::vector<double> far_distances(const envelope::EnvelopeSamples& envelope, const envelope::SurfaceSamples& surface,
+                                  const SheetOptions& options) {
+  const auto& pts = surface.points;
+  std::vector<double> out(pts.size());
+  const NearestIndex index(pts);
+  const auto k = static_cast<unsigned>(std::min<std::size_t>(pts.size(), 9));
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
+    out[i] = std::max(options.max_face_distance_rel_rho * rho, index.nearest(pts[i], k).back().second);
+  }
+  return out;
 }
 
 }  // namespace
@@ -39,18 +59,27 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   result.stats.polygons = raw.polygons.size();
 
   TaggedMesh sheet = triangulate_sheet(raw);
+  // Distances that scale with rho use the local rho of the nearest sample (adaptive rho),
+  // hole filling the smallest rho (a hole of 2 pi rho_min is below resolution everywhere).
+  std::vector<double> max_distance(surface.points.size(),
+                                   options.max_component_distance_rel_rho * envelope.rho);
+  if (envelope.local_rho.size() == surface.points.size())
+    for (std::size_t i = 0; i < max_distance.size(); ++i)
+      max_distance[i] = options.max_component_distance_rel_rho * envelope.local_rho[i];
+  const double fill_rho = envelope.local_rho.empty() ? envelope.rho : envelope.rho_min;
+  if (options.max_face_distance_rel_rho > 0)
+    result.stats.far_faces_removed = drop_far_faces(sheet, surface.points, far_distances(envelope, surface, options));
   // Outer medial-axis pieces go first: they would otherwise meet the sheet at non-manifold
   // edges and take part in the repairs.
   result.stats.components_dropped += filter_components(
-      sheet, surface.points, options.max_component_distance_rel_rho * envelope.rho, 0.0);
+      sheet, surface.points, max_distance, 0.0);
   result.stats.non_manifold_faces_removed = resolve_non_manifold_edges(sheet);
   result.stats.vertices_split = split_pinched_vertices(sheet);
   result.stats.components_dropped += filter_components(
-      sheet, surface.points, options.max_component_distance_rel_rho * envelope.rho,
-      options.min_component_area_fraction);
+      sheet, surface.points, max_distance, options.min_component_area_fraction);
   if (options.fill_loops_shorter_than_rel_rho > 0) {
     result.stats.holes_filled =
-        fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * envelope.rho);
+        fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
     // Filling can pinch where a hole touched another loop.
     result.stats.vertices_split += split_pinched_vertices(sheet);
   }
@@ -64,11 +93,16 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     // Trimming cuts off crumbs and leaves pinholes where single faces reached past the
     // boundary.
     result.stats.components_dropped += filter_components(
-        sheet, surface.points, options.max_component_distance_rel_rho * envelope.rho,
-        options.min_component_area_fraction);
+        sheet, surface.points, max_distance, options.min_component_area_fraction);
     if (options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled +=
-          fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * envelope.rho);
+          fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+    if (options.use_fill_away_from_boundary) {
+      std::vector<Point3> boundary_points;
+      for (const auto& c : surface.boundary)
+        for (const auto& b : c.vertices) boundary_points.push_back(b.position);
+      result.stats.holes_filled += fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
+    }
     result.stats.vertices_split += split_pinched_vertices(sheet);
     compact_vertices(sheet);
     const auto snapped = snap_border(sheet, surface, envelope.rho);

@@ -3,11 +3,9 @@
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"
+#include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
 #include "envcrust/union_find.h"
-
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +14,6 @@
 
 namespace envcrust::extract {
 namespace {
-
-using SearchTraits = CGAL::Search_traits_3<Kernel>;
-using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
 
 void remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
   std::size_t kept = 0;
@@ -126,7 +121,7 @@ std::size_t split_pinched_vertices(TaggedMesh& t) {
 }
 
 std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_points,
-                              double max_distance, double min_area_fraction) {
+                              const std::vector<double>& max_distance, double min_area_fraction) {
   if (t.mesh.triangles.empty()) return 0;
   const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
   topology::UnionFind uf(g.faces.size());
@@ -135,8 +130,7 @@ std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_
       uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
   std::map<std::uint32_t, std::vector<std::uint32_t>> components;
   for (std::uint32_t f = 0; f < g.faces.size(); ++f) components[uf.find(f)].push_back(f);
-  NeighborSearch::Tree tree(surface_points.begin(), surface_points.end());
-  tree.build();
+  const NearestIndex nearest(surface_points);
   double total_area = 0.0;
   std::vector<double> areas;
   std::vector<double> medians;
@@ -152,8 +146,8 @@ std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_
     std::vector<double> d;
     const std::size_t stride = std::max<std::size_t>(1, vertices.size() / 200);
     for (std::size_t i = 0; i < vertices.size(); i += stride) {
-      NeighborSearch search(tree, t.mesh.vertices[vertices[i]], 1);
-      d.push_back(std::sqrt(search.begin()->second));
+      const auto [j, distance] = nearest.nearest(t.mesh.vertices[vertices[i]]);
+      d.push_back(distance / max_distance[j]);
     }
     std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
     medians.push_back(d[d.size() / 2]);
@@ -164,7 +158,7 @@ std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_
   std::size_t dropped = 0;
   std::size_t index = 0;
   for (const auto& [root, faces] : components) {
-    const bool keep = medians[index] < max_distance && areas[index] >= min_area_fraction * total_area;
+    const bool keep = medians[index] < 1.0 && areas[index] >= min_area_fraction * total_area;
     if (!keep) {
       ++dropped;
       for (auto f : faces) remove[f] = 1;
@@ -175,19 +169,64 @@ std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_
   return dropped;
 }
 
+std::size_t drop_far_faces(TaggedMesh& t, const std::vector<Point3>& surface_points,
+                           const std::vector<double>& max_distance) {
+  if (t.mesh.triangles.empty() || surface_points.empty()) return 0;
+  const NearestIndex nearest(surface_points);
+  std::vector<char> remove(t.mesh.triangles.size(), 0);
+  std::size_t dropped = 0;
+  for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
+    const auto& tri = t.mesh.triangles[f];
+    const Point3 centre = CGAL::centroid(t.mesh.vertices[tri[0]], t.mesh.vertices[tri[1]], t.mesh.vertices[tri[2]]);
+    const auto [j, distance] = nearest.nearest(centre);
+    if (distance > max_distance[j]) {
+      remove[f] = 1;
+      ++dropped;
+    }
+  }
+  remove_faces(t, remove);
+  return dropped;
+}
+
+namespace {
+
+void fill_with_fan(TaggedMesh& t, const std::vector<Index>& loop) {
+  Vector3 sum(0, 0, 0);
+  for (Index v : loop) sum = sum + (t.mesh.vertices[v] - CGAL::ORIGIN);
+  const auto centre = static_cast<Index>(t.mesh.vertices.size());
+  t.mesh.vertices.push_back(CGAL::ORIGIN + sum / static_cast<double>(loop.size()));
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    t.mesh.triangles.push_back({loop[i], loop[(i + 1) % loop.size()], centre});
+    t.face_dot.push_back(-1.0);
+  }
+}
+
+}  // namespace
+
 std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
   const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
   std::size_t filled = 0;
   for (const auto& loop : topo.boundary_loops) {
     if (loop.length >= max_length || loop.vertices.size() < 3) continue;
-    Vector3 sum(0, 0, 0);
-    for (Index v : loop.vertices) sum = sum + (t.mesh.vertices[v] - CGAL::ORIGIN);
-    const auto centre = static_cast<Index>(t.mesh.vertices.size());
-    t.mesh.vertices.push_back(CGAL::ORIGIN + sum / static_cast<double>(loop.vertices.size()));
-    for (std::size_t i = 0; i < loop.vertices.size(); ++i) {
-      t.mesh.triangles.push_back({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()], centre});
-      t.face_dot.push_back(-1.0);
-    }
+    fill_with_fan(t, loop.vertices);
+    ++filled;
+  }
+  return filled;
+}
+
+std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
+                                          double max_distance) {
+  const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
+  const NearestIndex nearest(boundary_points);
+  std::size_t filled = 0;
+  for (const auto& loop : topo.boundary_loops) {
+    if (loop.vertices.size() < 3) continue;
+    std::size_t near = 0;
+    if (!nearest.empty())
+      for (Index v : loop.vertices)
+        if (nearest.nearest(t.mesh.vertices[v]).second <= max_distance) ++near;
+    if (2 * near >= loop.vertices.size()) continue;
+    fill_with_fan(t, loop.vertices);
     ++filled;
   }
   return filled;

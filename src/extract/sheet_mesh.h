@@ -28,11 +28,24 @@ std::size_t resolve_non_manifold_edges(TaggedMesh& tagged);
 /// that welding by position cannot pinch it again). Returns the number of copies made.
 std::size_t split_pinched_vertices(TaggedMesh& tagged);
 
-/// Keep the components whose median vertex distance to `surface_points` is below
-/// `max_distance` and whose area is at least `min_area_fraction` of the total. Returns the
-/// number of components dropped.
+/// Keep the components whose median over vertices of d(v, s) / max_distance[s], s the nearest
+/// of `surface_points` (one max_distance per point: the local rho scales it), is below 1 and
+/// whose area is at least `min_area_fraction` of the total. Returns the number dropped.
 std::size_t filter_components(TaggedMesh& tagged, const std::vector<Point3>& surface_points,
-                              double max_distance, double min_area_fraction);
+                              const std::vector<double>& max_distance, double min_area_fraction);
+
+/// Remove the faces whose centroid lies farther than max_distance[s] from its nearest surface
+/// sample s: pieces of the medial axis of the region that M encloses (the inside of a foot)
+/// hang on the sheet where they meet it and survive the component filter. Returns the count.
+std::size_t drop_far_faces(TaggedMesh& tagged, const std::vector<Point3>& surface_points,
+                           const std::vector<double>& max_distance);
+
+/// Fill (centroid fan) the border loops of which fewer than half the vertices lie within
+/// `max_distance` of `boundary_points`: such a loop follows no boundary curve of M, so it is a
+/// hole of the envelope where the input has a sampling gap (METHOD.md §5 c1 self-check: every
+/// border loop runs along a rim). Returns the number of loops filled.
+std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
+                                          double max_distance);
 
 /// Fill boundary loops shorter than `max_length` with a fan around their centroid. Returns
 /// the number of loops filled.
