@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
+#include <random>
 #include <tuple>
 
 namespace envcrust {
@@ -198,6 +200,40 @@ TEST(DetectBoundary, GridSquareHasOneLoop) {
     const double d = std::min({x, y, 6 - x, 6 - y});
     EXPECT_LT(d, 1.5 * result.spacing + 0.05);
   }
+}
+
+}  // namespace
+}  // namespace envcrust
+
+namespace envcrust {
+namespace {
+
+// A unit square sampled at random (seed 5, 12k points) with a round hole of radius 0.15 and an
+// unsampled slot 0.04 x 0.4 (about 3 spacings wide): a sampling gap, not a hole.
+std::vector<Point3> square_with_hole_and_slot() {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point3> out;
+  while (out.size() < 12000) {
+    const double x = u(rng), y = u(rng);
+    if (std::hypot(x - 0.3, y - 0.5) < 0.15) continue;
+    if (x > 0.68 && x < 0.72 && y > 0.3 && y < 0.7) continue;
+    out.emplace_back(x, y, 0.0);
+  }
+  return out;
+}
+
+TEST(DetectBoundary, MinLoopWidthDropsNarrowSamplingGapsAndKeepsHoles) {
+  const auto points = square_with_hole_and_slot();
+  const std::vector<Vector3> normals(points.size(), Vector3(0, 0, 1));
+  const auto all = boundary::detect_boundary(points, normals);
+  boundary::BoundaryOptions o;
+  o.min_loop_width = 7.0;
+  const auto wide = boundary::detect_boundary(points, normals, o);
+  std::cout << "loops: " << all.curves.size() << " without, " << wide.curves.size() << " with min_loop_width 7\n";
+  EXPECT_GT(all.curves.size(), 2u);     // the slot's edges come out as loops too
+  EXPECT_EQ(wide.curves.size(), 2u);    // the square's outline and the round hole
+  EXPECT_EQ(wide.dropped_loops, all.dropped_loops + (all.curves.size() - 2));
 }
 
 }  // namespace

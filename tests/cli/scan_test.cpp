@@ -1,0 +1,36 @@
+// The real foot scan through the CLI (label slow: about 30 s on 2 cores; skipped when
+// ../shared/data is absent). Issue #5: a manifold with the ankle as its only boundary loop.
+#include "cli_fixture.h"
+#include "run_command.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace {
+
+using envcrust::testing::CliTest;
+using envcrust::testing::run_envcrust;
+
+TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
+  const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "foot_vhacd";
+  if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
+  const auto run = run_envcrust("reconstruct " + (folder / "points.xyz").string() + " -o " + path("foot.ply") +
+                                " --rho-adaptive --boundary-min-width 7 --reference " +
+                                (folder / "foot_open.off").string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  EXPECT_EQ(j["input_boundary_curves"], 1);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_EQ(a["components"], 1);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_EQ(a["euler_characteristic"], 1);
+  EXPECT_EQ(a["is_orientable"], true);
+  // The ankle loop of the scan's own mesh is 2.39 long; ours follows the sparse rim samples.
+  EXPECT_NEAR(a["loops"][0]["length"].get<double>(), 2.39, 0.6);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.02);
+  EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.02);
+}
+
+}  // namespace
