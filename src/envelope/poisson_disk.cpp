@@ -22,28 +22,35 @@ struct CellHash {
   }
 };
 
-}  // namespace
-
-std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, double radius,
-                                           std::uint64_t seed) {
-  std::vector<std::size_t> order(points.size());
+// 0 .. n-1 in a seeded random order (Fisher-Yates).
+std::vector<std::size_t> shuffled_order(std::size_t n, std::uint64_t seed) {
+  std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::mt19937_64 rng(seed);
   for (std::size_t i = order.size(); i > 1; --i)
     std::swap(order[i - 1], order[static_cast<std::size_t>(uniform01(rng) * static_cast<double>(i))]);
+  return order;
+}
+
+CellKey key_of(const Point3& p, double cell) {
+  return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)),
+                 static_cast<std::int64_t>(std::floor(p.y() / cell)),
+                 static_cast<std::int64_t>(std::floor(p.z() / cell))};
+}
+
+}  // namespace
+
+std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, double radius,
+                                           std::uint64_t seed) {
+  const std::vector<std::size_t> order = shuffled_order(points.size(), seed);
   const double cell = radius / std::sqrt(3.0);
   const double r2 = radius * radius;
   std::unordered_map<CellKey, std::size_t, CellHash> grid;
   grid.reserve(points.size() / 4 + 16);
-  auto key_of = [&](const Point3& p) {
-    return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)),
-                   static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                   static_cast<std::int64_t>(std::floor(p.z() / cell))};
-  };
   std::vector<std::size_t> kept;
   for (std::size_t index : order) {
     const Point3& p = points[index];
-    const CellKey k = key_of(p);
+    const CellKey k = key_of(p, cell);
     bool free = true;
     // Kept points within `radius` lie at most 2 cells away (cell = radius / sqrt 3).
     for (std::int64_t dx = -2; dx <= 2 && free; ++dx)
@@ -63,11 +70,7 @@ std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, do
 
 std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, const std::vector<double>& radii,
                                            std::uint64_t seed) {
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::mt19937_64 rng(seed);
-  for (std::size_t i = order.size(); i > 1; --i)
-    std::swap(order[i - 1], order[static_cast<std::size_t>(uniform01(rng) * static_cast<double>(i))]);
+  const std::vector<std::size_t> order = shuffled_order(points.size(), seed);
   double largest = 0.0;
   for (double r : radii) largest = std::max(largest, r);
   if (!(largest > 0)) return {};
@@ -76,17 +79,12 @@ std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, co
   const double cell = largest / std::sqrt(3.0);
   std::unordered_map<CellKey, std::vector<std::size_t>, CellHash> grid;
   grid.reserve(points.size() / 4 + 16);
-  auto key_of = [&](const Point3& p) {
-    return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)),
-                   static_cast<std::int64_t>(std::floor(p.y() / cell)),
-                   static_cast<std::int64_t>(std::floor(p.z() / cell))};
-  };
   std::vector<std::size_t> kept;
   for (std::size_t index : order) {
     const Point3& p = points[index];
     const double r2 = radii[index] * radii[index];
     const auto reach = static_cast<std::int64_t>(std::ceil(radii[index] / cell));
-    const CellKey k = key_of(p);
+    const CellKey k = key_of(p, cell);
     bool free = true;
     for (std::int64_t dx = -reach; dx <= reach && free; ++dx)
       for (std::int64_t dy = -reach; dy <= reach && free; ++dy)

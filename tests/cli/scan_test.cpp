@@ -1,4 +1,4 @@
-// The real foot scan through the CLI (label slow: about 30 s on 2 cores; skipped when
+// The real foot scan through the CLI (label slow: 30-80 s on 2 cores; skipped when
 // ../shared/data is absent). Issue #5: a manifold with the ankle as its only boundary loop.
 #include "cli_fixture.h"
 #include "run_command.h"
