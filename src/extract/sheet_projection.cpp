@@ -110,10 +110,15 @@ std::vector<std::vector<std::uint32_t>> faces_of_vertices(const TriangleMesh& m)
   return faces_of;
 }
 
-std::vector<char> border_vertices(const TriangleMesh& m) {
-  const auto topo = topology::analyze_topology(m, {.weld_identical_vertices = false});
+// The border loops depend on the connectivity only, which no vertex move changes: a stage
+// computes them once.
+std::vector<topology::BoundaryLoop> border_loops(const TriangleMesh& m) {
+  return topology::analyze_topology(m, {.weld_identical_vertices = false}).boundary_loops;
+}
+
+std::vector<char> border_vertices(const TriangleMesh& m, const std::vector<topology::BoundaryLoop>& loops) {
   std::vector<char> is_border(m.vertices.size(), 0);
-  for (const auto& loop : topo.boundary_loops)
+  for (const auto& loop : loops)
     for (Index v : loop.vertices) is_border[v] = 1;
   return is_border;
 }
@@ -145,7 +150,7 @@ ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSampl
   ProjectionStats stats;
   auto& m = t.mesh;
   const auto faces_of = faces_of_vertices(m);
-  const auto is_border = border_vertices(m);
+  const auto is_border = border_vertices(m, border_loops(m));
   const NearestIndex samples(surface.points);
   for (Index v = 0; v < m.vertices.size(); ++v) {
     if (faces_of[v].empty() || is_border[v]) continue;
@@ -194,10 +199,9 @@ namespace {
 // Vertices within two border edges of a corner of the curves (the square's) stay put, or
 // the corner would be rounded off.
 void smooth_border_loops(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>& faces_of,
-                         const std::vector<Point3>& corners) {
+                         const std::vector<topology::BoundaryLoop>& loops, const std::vector<Point3>& corners) {
   for (int round = 0; round < 2; ++round) {
-    const auto topo = topology::analyze_topology(m, {.weld_identical_vertices = false});
-    for (const auto& loop : topo.boundary_loops) {
+    for (const auto& loop : loops) {
       const std::size_t n = loop.vertices.size();
       if (n < 4) continue;
       std::vector<Point3> target(n);
@@ -218,11 +222,11 @@ void smooth_border_loops(TriangleMesh& m, const std::vector<std::vector<std::uin
 // Snapped border vertices whose order along their boundary curve goes against the order of
 // their mesh loop (neighbours swapped on the curve): the loop would cross itself on the
 // curve, which is planar for a cylinder's rim. Both ends of each backward step are listed.
-std::vector<Index> out_of_order_snaps(const TriangleMesh& m, const std::vector<std::optional<CurvePoint>>& snap,
+std::vector<Index> out_of_order_snaps(const std::vector<topology::BoundaryLoop>& loops,
+                                      const std::vector<std::optional<CurvePoint>>& snap,
                                       const BoundaryPolylines& boundary) {
-  const auto topo = topology::analyze_topology(m, {.weld_identical_vertices = false});
   std::vector<Index> bad;
-  for (const auto& loop : topo.boundary_loops) {
+  for (const auto& loop : loops) {
     // The snapped vertices of the loop in order, and the signed steps between consecutive
     // ones on the same curve (wrapped to half the curve's length).
     std::vector<Index> snapped;
@@ -260,14 +264,15 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   if (surface.boundary.empty()) return stats;
   auto& m = t.mesh;
   const auto faces_of = faces_of_vertices(m);
-  const auto is_border = border_vertices(m);
+  const auto loops = border_loops(m);
+  const auto is_border = border_vertices(m, loops);
   const BoundaryPolylines boundary = polylines_of(surface);
   const NearestIndex index(boundary.points);
   std::vector<Point3> corners;
   for (const auto& c : surface.boundary)
     for (const auto& v : c.vertices)
       if (v.is_corner) corners.push_back(v.position);
-  smooth_border_loops(m, faces_of, corners);
+  smooth_border_loops(m, faces_of, loops, corners);
   const std::vector<Point3> before = m.vertices;
   std::vector<std::optional<CurvePoint>> snap(m.vertices.size());
   for (Index v = 0; v < m.vertices.size(); ++v) {
@@ -283,7 +288,7 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   }
   // Undo the snaps that reverse the loop's order along the curve, until none is left.
   for (int round = 0; round < 8; ++round) {
-    const auto bad = out_of_order_snaps(m, snap, boundary);
+    const auto bad = out_of_order_snaps(loops, snap, boundary);
     std::size_t undone = 0;
     for (Index v : bad) {
       if (!snap[v] || !move_if_safe(m, faces_of, v, before[v])) continue;
