@@ -72,4 +72,12 @@ struct TopologyOptions {
 /// the mesh has 30 vertices").
 MeshTopology analyze_topology(const TriangleMesh& mesh, const TopologyOptions& options = {});
 
+/// Flip triangles so that faces sharing an edge run it in opposite directions: every
+/// orientable piece (faces joined through two-face edges) comes out consistently wound, a
+/// closed one facing outward (positive signed volume); a non-orientable piece is wound
+/// consistently except across one seam of edges. Faces with a repeated vertex are left alone.
+/// Vertices are not welded: call it on a mesh whose shared vertices share indices.
+/// @returns the number of faces flipped.
+std::size_t orient_faces(TriangleMesh& mesh);
+
 }  // namespace envcrust::topology

@@ -6,7 +6,7 @@
 #include <cstdlib>
 
 #include "envcrust/errors.h"
-#include "envcrust/mesh_graph.h"
+#include "envcrust/topology.h"
 
 namespace envcrust::experiments::detail {
 namespace {
@@ -16,20 +16,6 @@ namespace {
 constexpr std::size_t kDistanceSamples = 20000;
 
 double percent_of(const distance::DistanceReport& d, double value) { return 100.0 * d.relative(value); }
-
-// The extracted sheet's faces come in arbitrary winding; the renderer colours front and back
-// differently, so flip faces to one orientation per orientable piece (display only).
-TriangleMesh consistently_wound(const TriangleMesh& mesh) {
-  TriangleMesh out;
-  out.vertices = mesh.vertices;
-  for (const auto& t : mesh.triangles)
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) out.triangles.push_back(t);
-  const auto graph = topology::build_mesh_graph(out.triangles, out.vertices.size());
-  const auto orientation = topology::orient_components(graph, std::vector<std::uint32_t>(out.triangles.size(), 0), 1);
-  for (std::size_t f = 0; f < out.triangles.size(); ++f)
-    if (orientation.face_sign[f] < 0) std::swap(out.triangles[f][1], out.triangles[f][2]);
-  return out;
-}
 
 }  // namespace
 
@@ -190,7 +176,8 @@ PanelSpec mesh_panel(std::string caption, const TriangleMesh& mesh, const render
   panel.view = view;
   if (mesh.triangles.empty()) return panel;
   render::MeshLayer layer;
-  layer.mesh = consistently_wound(mesh);
+  layer.mesh = mesh;  // front and back are coloured apart: wind each piece one way
+  topology::orient_faces(layer.mesh);
   panel.scene.meshes.push_back(std::move(layer));
   if (show_boundary) {
     const auto topology = topology::analyze_topology(mesh);

@@ -7,6 +7,7 @@
 #include "voronoi_sheet.h"
 
 #include "envcrust/nearest_index.h"
+#include "envcrust/topology.h"
 
 #include <algorithm>
 #include <sstream>
@@ -110,6 +111,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.projections_refused = moved.refused + snapped.refused;
   }
   result.mesh = std::move(sheet.mesh);
+  // The Voronoi polygons come wound as their Delaunay edges happen to run.
+  topology::orient_faces(result.mesh);
   if (result.mesh.triangles.empty())
     result.warnings.push_back("the extracted sheet is empty: the envelope is too sparse for rho");
   return result;

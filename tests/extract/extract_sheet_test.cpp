@@ -58,6 +58,9 @@ TEST_P(SheetOfBuiltin, has_the_surface_topology_and_stays_close) {
   EXPECT_EQ(t.euler_characteristic, expected.euler_characteristic);
   EXPECT_EQ(static_cast<int>(t.boundary_loops.size()), expected.boundary_loops);
   EXPECT_EQ(t.is_orientable, expected.is_orientable);
+  if (t.is_orientable) {
+    EXPECT_EQ(t.misoriented_edges, 0u);  // wound consistently, not just orientable
+  }
   ASSERT_EQ(report.loops.size(), expected.boundary_knots.size());
   for (std::size_t i = 0; i < report.loops.size(); ++i) {
     ASSERT_TRUE(report.loops[i].knot.has_value());

@@ -61,6 +61,52 @@ TEST(Topology, closed_surfaces_have_no_boundary) {
   EXPECT_TRUE(torus.is_orientable);
 }
 
+namespace {
+
+double signed_volume(const TriangleMesh& m) {
+  double v = 0;
+  for (const auto& t : m.triangles)
+    v += CGAL::scalar_product(m.vertices[t[0]] - CGAL::ORIGIN,
+                              CGAL::cross_product(m.vertices[t[1]] - CGAL::ORIGIN, m.vertices[t[2]] - CGAL::ORIGIN));
+  return v / 6;
+}
+
+// Flip every third face: the mesh stays the same surface but is no longer wound consistently.
+TriangleMesh scrambled(TriangleMesh m) {
+  for (std::size_t f = 0; f < m.triangles.size(); f += 3) std::swap(m.triangles[f][1], m.triangles[f][2]);
+  return m;
+}
+
+}  // namespace
+
+TEST(OrientFaces, winds_open_and_closed_surfaces_consistently_and_closed_ones_outward) {
+  for (auto m : {fixtures::open_cylinder(24, 6), fixtures::torus(24, 12), fixtures::capped_cylinder(24, 6)}) {
+    m = scrambled(m);
+    ASSERT_GT(analyze_topology(m).misoriented_edges, 0u);
+    EXPECT_GT(topology::orient_faces(m), 0u);
+    const auto t = analyze_topology(m);
+    EXPECT_EQ(t.misoriented_edges, 0u);
+    EXPECT_TRUE(t.is_orientable);
+  }
+  // A closed surface wound inward comes back outward.
+  auto cube = fixtures::capped_cylinder(24, 6);
+  const double outward = signed_volume(cube);
+  ASSERT_GT(outward, 0);
+  for (auto& t : cube.triangles) std::swap(t[1], t[2]);
+  EXPECT_EQ(topology::orient_faces(cube), cube.triangles.size());
+  EXPECT_NEAR(signed_volume(cube), outward, 1e-12);
+}
+
+TEST(OrientFaces, leaves_a_moebius_strip_with_one_seam) {
+  auto m = scrambled(fixtures::moebius(40, 4));
+  topology::orient_faces(m);
+  const auto t = analyze_topology(m);
+  EXPECT_FALSE(t.is_orientable);
+  EXPECT_GT(t.misoriented_edges, 0u);
+  EXPECT_LE(t.misoriented_edges, 8u);  // one seam across the 4 rows: at most 2 edges per row
+  EXPECT_EQ(t.euler_characteristic, 0);
+}
+
 TEST(Topology, capping_a_cylinder_closes_it) {
   const auto t = analyze_topology(fixtures::capped_cylinder(24, 6));
   EXPECT_EQ(t.euler_characteristic, 2);

@@ -1,0 +1,70 @@
+// orient_faces: flip triangles so that each piece of a mesh is consistently wound.
+#include "envcrust/mesh_graph.h"
+#include "envcrust/topology.h"
+#include "envcrust/union_find.h"
+
+#include <utility>
+
+namespace envcrust::topology {
+
+std::size_t orient_faces(TriangleMesh& mesh) {
+  std::vector<std::uint32_t> kept;  // faces with three distinct vertices
+  std::vector<std::array<Index, 3>> faces;
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    kept.push_back(f);
+    faces.push_back(t);
+  }
+  const MeshGraph g = build_mesh_graph(std::move(faces), mesh.vertices.size());
+  UnionFind uf(g.faces.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    if (g.face_count_of_edge(e) == 2)
+      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[g.edge_face_begin[e] + 1]);
+  std::vector<std::uint32_t> component(g.faces.size());
+  std::vector<std::uint32_t> id(g.faces.size(), UINT32_MAX);
+  std::uint32_t count = 0;
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
+    const std::uint32_t r = uf.find(f);
+    if (id[r] == UINT32_MAX) id[r] = count++;
+    component[f] = id[r];
+  }
+  const Orientation orientation = orient_components(g, component, count);
+
+  // Closed orientable pieces face outward: their signed volume (sum of det(a, b, c) / 6 over
+  // the faces, about any origin) must be positive. The origin is the piece's first vertex, so
+  // far-away coordinates do not cancel.
+  std::vector<double> volume(count, 0.0);
+  std::vector<bool> closed(count, true);
+  std::vector<Point3> origin(count);
+  std::vector<bool> has_origin(count, false);
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    if (g.face_count_of_edge(e) != 2) closed[component[g.edge_faces[g.edge_face_begin[e]]]] = false;
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
+    const std::uint32_t c = component[f];
+    auto t = g.faces[f];
+    if (orientation.face_sign[f] < 0) std::swap(t[1], t[2]);
+    if (!has_origin[c]) {
+      origin[c] = mesh.vertices[t[0]];
+      has_origin[c] = true;
+    }
+    const Vector3 a = mesh.vertices[t[0]] - origin[c], b = mesh.vertices[t[1]] - origin[c],
+                  d = mesh.vertices[t[2]] - origin[c];
+    volume[c] += CGAL::scalar_product(a, CGAL::cross_product(b, d));
+  }
+
+  std::size_t flipped = 0;
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
+    const std::uint32_t c = component[f];
+    int sign = orientation.face_sign[f];
+    if (closed[c] && orientation.is_orientable[c] && volume[c] < 0) sign = -sign;
+    if (sign < 0) {
+      auto& t = mesh.triangles[kept[f]];
+      std::swap(t[1], t[2]);
+      ++flipped;
+    }
+  }
+  return flipped;
+}
+
+}  // namespace envcrust::topology
