@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -43,6 +44,7 @@ struct Args {
 struct Measurement {
   double seconds[8] = {};  // sample, delaunay, poles, power diagram, labeling, crust, shape, total
   double dt_sequential = 0, dt_parallel = 0;
+  double stage_peak_mb[6] = {};  // peak RSS within each stage, in the order of seconds[1..6]
   std::size_t poles = 0, hidden = 0, faces = 0;
   long euler = 0;
   int closed = -1, manifold = -1;
@@ -92,12 +94,36 @@ std::vector<Point3> sample(const std::string& name, std::size_t n, double noise)
   return surfaces::sample_surface(*surfaces::make_builtin(name), options).points;
 }
 
+// Peak resident set size since the last reset, in MB (Linux: VmHWM), then reset it.
+double take_peak_mb() {
+  double kb = 0;
+  if (FILE* f = std::fopen("/proc/self/status", "r")) {
+    char line[256];
+    while (std::fgets(line, sizeof line, f))
+      if (std::strncmp(line, "VmHWM:", 6) == 0) kb = std::atof(line + 6);
+    std::fclose(f);
+  }
+  if (FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
+    std::fputs("5", f);  // 5: reset the peak to the current RSS
+    std::fclose(f);
+  }
+  return kb / 1024.0;
+}
+
 Measurement run_power_crust(const std::vector<Point3>& points, const Args& args) {
   Measurement m;
   powercrust::PowerCrustOptions options;
   options.parallel_insertion_from = args.parallel_from;
+  Progress progress;
+  const char* stage_names[] = {"delaunay", "poles", "power_diagram", "labeling", "crust", "power_shape"};
+  take_peak_mb();
+  progress.callback = [&](std::string_view stage, double fraction) {
+    if (fraction < 1.0) return;
+    for (int k = 0; k < 6; ++k)
+      if (stage == stage_names[k]) m.stage_peak_mb[k] = take_peak_mb();
+  };
   const auto t0 = std::chrono::steady_clock::now();
-  const auto r = powercrust::power_crust(points, options);
+  const auto r = powercrust::power_crust(points, options, progress);
   m.seconds[7] = since(t0);
   const auto& s = r.stats;
   const double stages[] = {s.seconds_delaunay, s.seconds_poles, s.seconds_power_diagram,
@@ -154,7 +180,10 @@ std::pair<Measurement, double> in_child(Work&& work) {
   rusage usage{};
   wait4(pid, &status, 0, &usage);
   if (!ok) std::fprintf(stderr, "child failed (status %d)\n", status);
-  return {m, static_cast<double>(usage.ru_maxrss) / 1024.0};
+  // The stage peaks reset the kernel's high-water mark, so the run's peak is their maximum.
+  double peak = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  for (double stage : m.stage_peak_mb) peak = std::max(peak, stage);
+  return {m, peak};
 }
 
 }  // namespace
@@ -178,6 +207,10 @@ int main(int argc, char** argv) {
                   pc.seconds[5], pc.seconds[6], pc.seconds[7], base.dt_sequential, base.dt_parallel,
                   pc.seconds[7] / base.dt_sequential, pc.seconds[7] / base.dt_parallel, pc_mb,
                   pc_mb / (static_cast<double>(n) / 1e6), pc.poles, pc.hidden, topo);
+      std::printf("        peak MB per stage: delaunay %.0f, poles %.0f, power diagram %.0f, labeling %.0f, "
+                  "crust %.0f, power shape %.0f\n",
+                  pc.stage_peak_mb[0], pc.stage_peak_mb[1], pc.stage_peak_mb[2], pc.stage_peak_mb[3],
+                  pc.stage_peak_mb[4], pc.stage_peak_mb[5]);
       std::fflush(stdout);
       (void)base_mb;
     }

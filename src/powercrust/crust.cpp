@@ -22,30 +22,34 @@ using RtCell = Regular::Cell_handle;
 // name, so rounding never merges two cells whose vertices nearly coincide.
 using CellKey = std::array<Index, 4>;
 
-struct Corner {
-  CellKey key;
-  Point3 point;
-};
-
-// Polygons found by one thread, flattened.
+// Polygons found by one thread, flattened. Corners are kept as keys only: a power vertex is
+// shared by about three polygons, so its point is computed once per key afterwards (at 1M
+// samples the points stored per corner, copied once for deduplication, were the crust stage's
+// peak memory).
 struct PolygonChunk {
   std::vector<std::array<Index, 2>> edges;  ///< {In pole, Out pole}
   std::vector<std::size_t> starts;          ///< into corners; one past the last polygon at the end
-  std::vector<Corner> corners;
+  std::vector<CellKey> corners;
   std::size_t unbounded = 0;
 };
 
-// The weighted circumcentre computed from the vertices in id order, so its bits do not
-// depend on the cell's vertex order.
-Corner corner_of(RtCell c) {
-  std::array<RtVertex, 4> v{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
-  std::sort(v.begin(), v.end(), [](RtVertex a, RtVertex b) { return a->info() < b->info(); });
-  return {{v[0]->info(), v[1]->info(), v[2]->info(), v[3]->info()},
-          power_vertex(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point())};
+CellKey key_of(RtCell c) {
+  CellKey key{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+// The weighted circumcentre computed from the poles in id order, so its bits do not depend on
+// the cell's vertex order. The weighted points are built as build_power_diagram inserted them.
+Point3 corner_point(const CellKey& key, const std::vector<Pole>& poles) {
+  auto weighted = [&](Index id) {
+    return Kernel::Weighted_point_3(poles[id].center, poles[id].radius * poles[id].radius);
+  };
+  return power_vertex(weighted(key[0]), weighted(key[1]), weighted(key[2]), weighted(key[3]));
 }
 
 void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& poles, Index p,
-                      PolygonChunk& chunk, std::vector<RtCell>& cells, std::vector<Corner>& corners) {
+                      PolygonChunk& chunk, std::vector<RtCell>& cells, std::vector<CellKey>& corners) {
   const Regular& rt = *diagram.rt;
   const RtVertex v = diagram.vertex_of_pole[p];
   cells.clear();
@@ -76,17 +80,14 @@ void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& pole
         bounded = false;
         break;
       }
-      corners.push_back(corner_of(circulator));
+      corners.push_back(key_of(circulator));
     } while (++circulator != done);
     if (!bounded) {
       ++chunk.unbounded;
       continue;
     }
     // Start at the smallest key: the fan then does not depend on where the circulation began.
-    std::rotate(corners.begin(),
-                std::min_element(corners.begin(), corners.end(),
-                                 [](const Corner& a, const Corner& b) { return a.key < b.key; }),
-                corners.end());
+    std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
     chunk.edges.push_back({p, q});
     chunk.starts.push_back(chunk.corners.size());
     chunk.corners.insert(chunk.corners.end(), corners.begin(), corners.end());
@@ -152,7 +153,7 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
     if (poles[p].label == PoleLabel::In && !poles[p].is_hidden) inner.push_back(static_cast<Index>(p));
 
   tbb::enumerable_thread_specific<PolygonChunk> chunks;
-  tbb::enumerable_thread_specific<std::pair<std::vector<RtCell>, std::vector<Corner>>> scratch;
+  tbb::enumerable_thread_specific<std::pair<std::vector<RtCell>, std::vector<CellKey>>> scratch;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, inner.size(), 256),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       auto& chunk = chunks.local();
@@ -173,20 +174,22 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
   tbb::parallel_sort(refs.begin(), refs.end(), [](const Ref& a, const Ref& b) { return a.edge < b.edge; });
   out.polygons = refs.size();
 
-  std::vector<Corner> vertices;
-  for (const auto& chunk : chunks) vertices.insert(vertices.end(), chunk.corners.begin(), chunk.corners.end());
-  auto by_key = [](const Corner& a, const Corner& b) { return a.key < b.key; };
-  tbb::parallel_sort(vertices.begin(), vertices.end(), by_key);
-  vertices.erase(std::unique(vertices.begin(), vertices.end(),
-                             [](const Corner& a, const Corner& b) { return a.key == b.key; }),
-                 vertices.end());
+  std::vector<CellKey> keys;
+  for (const auto& chunk : chunks) keys.insert(keys.end(), chunk.corners.begin(), chunk.corners.end());
+  tbb::parallel_sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  keys.shrink_to_fit();
   // Vertices stay apart by cell even where their positions coincide: every sample is a
   // degenerate power vertex (all polar balls through it have power 0 there) that symbolic
   // perturbation splits into several cells, and merging those by position pinches the crust
   // (measured: a hundred non-manifold edges on a noisy 5k sphere, none without merging).
-  auto id_of = [&](const Corner& c) {
-    return static_cast<Index>(std::lower_bound(vertices.begin(), vertices.end(), c, by_key) - vertices.begin());
+  auto id_of = [&](const CellKey& key) {
+    return static_cast<Index>(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin());
   };
+  std::size_t triangles = 0;
+  for (const Ref& ref : refs) triangles += ref.chunk->starts[ref.index + 1] - ref.chunk->starts[ref.index] - 2;
+  out.mesh.triangles.reserve(triangles);
+  out.face_poles.reserve(triangles);
   std::vector<Index> polygon;
   for (const Ref& ref : refs) {
     polygon.clear();
@@ -197,8 +200,12 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
       out.face_poles.push_back(ref.edge);
     }
   }
-  out.mesh.vertices.reserve(vertices.size());
-  for (const Corner& c : vertices) out.mesh.vertices.push_back(c.point);
+  refs = {};
+  chunks.clear();
+  out.mesh.vertices.resize(keys.size());
+  tbb::parallel_for(std::size_t{0}, keys.size(),
+                    [&](std::size_t i) { out.mesh.vertices[i] = corner_point(keys[i], poles); });
+  keys = {};
 
   if (out.unbounded_faces > 0)
     out.warnings.push_back(std::to_string(out.unbounded_faces) +

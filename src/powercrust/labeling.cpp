@@ -130,9 +130,11 @@ class Labeler {
       }
       for (std::size_t k = graph_.offsets[p]; k < graph_.offsets[p + 1]; ++k) {
         const Index q = graph_.neighbours[k];
-        if (poles_[q].label != PoleLabel::Unknown || !(graph_.weights[k] > theta_)) continue;
-        if (inside) raise(in_, q, in_[p] * graph_.weights[k]);
-        else raise(out_, q, out_[p] * graph_.weights[k]);
+        if (poles_[q].label != PoleLabel::Unknown) continue;
+        const double w = intersection_weight(poles_[p], poles_[q]);
+        if (!(w > theta_)) continue;
+        if (inside) raise(in_, q, in_[p] * w);
+        else raise(out_, q, out_[p] * w);
       }
     }
   }
@@ -181,8 +183,10 @@ void second_pass(std::vector<Pole>& poles, const OppositeLists& o, const PoleGra
     std::optional<double> w_in, w_out;
     for (std::size_t k = g.offsets[p]; k < g.offsets[p + 1]; ++k) {
       const PoleLabel l = poles[g.neighbours[k]].label;
+      if (l == PoleLabel::Unknown) continue;
       auto& w = l == PoleLabel::In ? w_in : w_out;
-      if (l != PoleLabel::Unknown && (!w || g.weights[k] > *w)) w = g.weights[k];
+      const double pq = intersection_weight(poles[p], poles[g.neighbours[k]]);
+      if (!w || pq > *w) w = pq;
     }
     const bool in_deep = w_in && *w_in > deep;
     const bool out_deep = w_out && *w_out > deep;
@@ -206,8 +210,9 @@ std::size_t resolve_unknown(std::vector<Pole>& poles, const OppositeLists& o, co
       double best_w = 0;
       for (std::size_t k = g.offsets[p]; k < g.offsets[p + 1]; ++k) {
         const PoleLabel l = poles[g.neighbours[k]].label;
-        if (l != PoleLabel::Unknown && (best == PoleLabel::Unknown || g.weights[k] > best_w))
-          best = l, best_w = g.weights[k];
+        if (l == PoleLabel::Unknown) continue;
+        const double pq = intersection_weight(poles[p], poles[g.neighbours[k]]);
+        if (best == PoleLabel::Unknown || pq > best_w) best = l, best_w = pq;
       }
       if (best == PoleLabel::Unknown) {
         const PoleLabel opp = opposite_label(poles, o, p);

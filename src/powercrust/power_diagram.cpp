@@ -17,12 +17,10 @@ constexpr std::size_t kBlock = 4096;
 
 struct GraphBlock {
   std::vector<Index> neighbours;
-  std::vector<double> weights;
   std::vector<std::size_t> degree;
 };
 
-void gather_block(const PowerDiagram& diagram, const std::vector<Pole>& poles, std::size_t begin,
-                  std::size_t end, GraphBlock& block) {
+void gather_block(const PowerDiagram& diagram, std::size_t begin, std::size_t end, GraphBlock& block) {
   const Regular& rt = *diagram.rt;
   std::vector<Regular::Cell_handle> cells;
   std::vector<Index> row;
@@ -41,10 +39,7 @@ void gather_block(const PowerDiagram& diagram, const std::vector<Pole>& poles, s
     std::sort(row.begin(), row.end());
     row.erase(std::unique(row.begin(), row.end()), row.end());
     block.degree[p - begin] = row.size();
-    for (Index q : row) {
-      block.neighbours.push_back(q);
-      block.weights.push_back(intersection_weight(poles[p], poles[q]));
-    }
+    block.neighbours.insert(block.neighbours.end(), row.begin(), row.end());
   }
 }
 
@@ -83,7 +78,7 @@ PoleGraph build_pole_graph(const PowerDiagram& diagram, const std::vector<Pole>&
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<GraphBlock> parts(blocks);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-    gather_block(diagram, poles, b * kBlock, std::min(n, (b + 1) * kBlock), parts[b]);
+    gather_block(diagram, b * kBlock, std::min(n, (b + 1) * kBlock), parts[b]);
   });
   PoleGraph g;
   g.offsets.assign(n + 1, 0);
@@ -94,12 +89,9 @@ PoleGraph build_pole_graph(const PowerDiagram& diagram, const std::vector<Pole>&
     block_start[b + 1] = block_start[b] + parts[b].neighbours.size();
   }
   g.neighbours.resize(g.offsets[n]);
-  g.weights.resize(g.offsets[n]);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     std::copy(parts[b].neighbours.begin(), parts[b].neighbours.end(),
               g.neighbours.begin() + static_cast<std::ptrdiff_t>(block_start[b]));
-    std::copy(parts[b].weights.begin(), parts[b].weights.end(),
-              g.weights.begin() + static_cast<std::ptrdiff_t>(block_start[b]));
   });
   return g;
 }
