@@ -1,5 +1,6 @@
 // Optional last stage: isotropic remeshing of the reconstruction (CGAL's
-// Polygon_mesh_processing::isotropic_remeshing) that keeps its topology and boundary loops.
+// Polygon_mesh_processing::isotropic_remeshing) that keeps its topology and boundary loops,
+// non-orientable ones included (cut open along a seam, welded back).
 #pragma once
 
 #include "envcrust/types.h"
@@ -14,7 +15,8 @@ namespace envcrust::remesh {
 enum class BoundaryMode {
   /// Border edges are split and collapsed along the input's border polyline (CGAL's default
   /// for patch borders): the border is resampled at the target length, its new vertices lie
-  /// on the old polyline, and no border vertex leaves it.
+  /// on the old polyline, and no border vertex leaves it. Where a Möbius seam meets the
+  /// border, the seam's end vertex stays.
   Resample,
   /// Every input border vertex is kept: border edges longer than 4/3 of the target are split
   /// first, then all border edges are protected (neither split nor collapsed again). The
@@ -54,11 +56,22 @@ struct RemeshResult {
   std::vector<std::string> warnings;
 };
 
-/// Remesh a manifold, orientable triangle mesh isotropically, keeping its Euler
-/// characteristic, boundary loops, components and orientability: if any of them changes, the
-/// input is returned unchanged with a warning. Non-orientable or non-manifold meshes are
-/// returned unchanged with a warning ("remeshing skipped: the mesh is not orientable"), since
-/// CGAL's halfedge meshes cannot hold them.
+/// Remesh a manifold triangle mesh isotropically, keeping its Euler characteristic,
+/// boundary loops, components and orientability: if any of them changes, the input is
+/// returned unchanged with a warning. A non-orientable mesh (a Möbius band), which CGAL's
+/// halfedge meshes cannot hold, is first cut open along its seam: the edges across which the
+/// faces, oriented greedily breadth-first, disagree (for a Möbius band a path across it),
+/// each seam vertex copied once per side. The seam is held fixed while the rest is remeshed
+/// (its edges split to the target length, the same points on both sides; its vertices never
+/// move or go; it is not a border for BoundaryMode), then both sides are welded back, so the
+/// output is non-orientable again and has no vertex twice. The fixed seam keeps the input's
+/// dense vertices and thin triangles, so a second round cuts along a seam half way round from
+/// the first (through remeshed triangles), with the border fixed and vertices projected onto
+/// the input, and remeshes the first seam's neighbourhood. Orientable meshes have an empty
+/// seam and get one round (faces are wound consistently, the first one as given).
+/// Non-manifold meshes are returned unchanged with a warning ("remeshing skipped: the mesh is
+/// not a manifold (...)"), as are meshes with degenerate or duplicate faces or repeated
+/// vertices.
 /// @throws InvalidOptions when a field is out of range (the message names it and its value).
 /// @throws InvalidInput when a face index is out of range.
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options = {});

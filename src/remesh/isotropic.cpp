@@ -1,9 +1,14 @@
-// isotropic_remesh: CGAL's isotropic remeshing on a Surface_mesh built from the soup.
+// isotropic_remesh: CGAL's isotropic remeshing on a Surface_mesh built from the mesh cut
+// open along its seam (so a non-orientable mesh fits), welded back after.
 #include "isotropic.h"
+
+#include "seam.h"
 
 #include "envcrust/errors.h"
 
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
@@ -11,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <set>
 #include <utility>
 
 namespace envcrust::remesh {
@@ -19,23 +26,54 @@ namespace {
 using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-SurfaceMesh to_surface_mesh(const TriangleMesh& mesh) {
-  std::vector<Point3> points = mesh.vertices;
-  std::vector<std::vector<std::size_t>> polygons;
-  polygons.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
-  // A manifold orientable mesh is oriented without duplicating any vertex; a false return
-  // means it was not one after all.
-  if (!PMP::orient_polygon_soup(points, polygons) || points.size() != mesh.vertices.size() ||
-      !PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    throw NumericalFailure("remeshing: the faces cannot be oriented into a halfedge mesh");
+// The cut mesh as a Surface_mesh: vertex i is cut vertex i. Seam vertices are marked and
+// carry their weld key (other vertices, new ones included, have none).
+struct Built {
   SurfaceMesh sm;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
-  return sm;
+  SurfaceMesh::Property_map<SurfaceMesh::Vertex_index, bool> on_seam;
+  SurfaceMesh::Property_map<SurfaceMesh::Vertex_index, Index> weld_key;
+};
+
+Built to_surface_mesh(const CutMesh& cut) {
+  std::vector<std::vector<std::size_t>> polygons;
+  polygons.reserve(cut.mesh.triangles.size());
+  for (const auto& t : cut.mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
+  // The cut faces are consistently oriented and every vertex has one fan; a false return
+  // means the mesh was not a manifold after all.
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw NumericalFailure("remeshing: the faces cannot be oriented into a halfedge mesh");
+  Built b;
+  b.on_seam = b.sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:envcrust_on_seam", false).first;
+  b.weld_key = b.sm.add_property_map<SurfaceMesh::Vertex_index, Index>("v:envcrust_weld_key", kNoWeldKey).first;
+  for (std::size_t v = 0; v < cut.mesh.vertices.size(); ++v) {
+    const auto vd = b.sm.add_vertex(cut.mesh.vertices[v]);
+    if (cut.on_seam[v]) {
+      b.on_seam[vd] = true;
+      b.weld_key[vd] = cut.weld_key[v];
+    }
+  }
+  for (const auto& t : cut.mesh.triangles) {
+    const auto f = b.sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
+                                 SurfaceMesh::Vertex_index(t[2]));
+    if (f == SurfaceMesh::null_face())
+      throw NumericalFailure("remeshing: the faces cannot be oriented into a halfedge mesh");
+  }
+  return b;
 }
 
-TriangleMesh to_triangle_mesh(const SurfaceMesh& sm) {
+// A remeshed mesh, welded, and one of its faces at the seam it was cut along (none for an
+// empty seam).
+struct Remeshed {
+  TriangleMesh mesh;
+  std::optional<std::uint32_t> seam_face;
+};
+
+// Back to an indexed mesh without unused vertices, the two sides of the seam welded.
+Remeshed to_triangle_mesh(const Built& b) {
+  const SurfaceMesh& sm = b.sm;
   TriangleMesh out;
+  std::optional<std::uint32_t> seam_face;
+  std::vector<Index> key;
   constexpr Index unused = std::numeric_limits<Index>::max();
   std::vector<Index> index(sm.num_vertices() + sm.number_of_removed_vertices(), unused);
   for (const auto f : sm.faces()) {
@@ -45,14 +83,78 @@ TriangleMesh to_triangle_mesh(const SurfaceMesh& sm) {
       if (index[v] == unused) {
         index[v] = static_cast<Index>(out.vertices.size());
         out.vertices.push_back(sm.point(v));
+        key.push_back(b.weld_key[v]);
       }
+      if (b.on_seam[v] && !seam_face) seam_face = static_cast<std::uint32_t>(out.triangles.size());
       if (k < 3) tri[k] = index[v];
       ++k;
     }
     if (k != 3) throw NumericalFailure("remeshing: CGAL returned a face with " + std::to_string(k) + " vertices");
     out.triangles.push_back(tri);
   }
-  return out;
+  return {weld(out, key), seam_face};  // welding keeps the faces and their order
+}
+
+// What one remeshing round does to the true border: as the BoundaryMode says, or nothing.
+enum class Border { Resample, Keep, Fixed };
+
+// One remeshing of the mesh cut open along the seam of a greedy orientation from first_face.
+// The seam stays as it is (only split to the target, the same on both sides): its vertices
+// are constrained, so they neither move nor go, and its edges, no longer than the target and
+// between fixed vertices, are neither split nor collapsed in either mode. Border::Fixed
+// constrains the true border's vertices likewise (its edges, no longer than 4/3 of the target
+// after a first round, stay as they are).
+// Closest points on a triangle soup (the input of the first round, which later rounds
+// project onto instead of onto their own input).
+class SoupProjection {
+ public:
+  explicit SoupProjection(const TriangleMesh& mesh) {
+    triangles_.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+      triangles_.emplace_back(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    tree_.insert(triangles_.begin(), triangles_.end());
+    tree_.accelerate_distance_queries();
+  }
+  [[nodiscard]] Point3 closest_point(const Point3& p) const { return tree_.closest_point(p); }
+
+ private:
+  using Triangle = Kernel::Triangle_3;
+  using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<Triangle>::const_iterator>;
+  std::vector<Triangle> triangles_;
+  CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree_;
+};
+
+Remeshed remesh_cut_open(const TriangleMesh& mesh, std::uint32_t first_face, double target_edge_length,
+                         unsigned int iterations, Border border_mode, const SoupProjection* projection = nullptr) {
+  CutMesh cut = cut_along_seam(mesh, first_face);
+  split_long_seam_edges(cut, target_edge_length);
+  Built b = to_surface_mesh(cut);
+  SurfaceMesh& sm = b.sm;
+  auto constrained = sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:envcrust_constrained", false).first;
+  for (const auto v : sm.vertices()) constrained[v] = b.on_seam[v] || (border_mode == Border::Fixed && sm.is_border(v));
+  const auto params = CGAL::parameters::number_of_iterations(iterations).vertex_is_constrained_map(constrained);
+  if (border_mode == Border::Keep) {
+    // Protected edges must not exceed 4/3 of the target (CGAL's precondition). The seam's
+    // sides are border edges of the cut mesh too, already short enough.
+    const std::set<std::array<Index, 2>> seam(cut.seam_edges.begin(), cut.seam_edges.end());
+    auto is_seam = [&](SurfaceMesh::Edge_index e) {
+      const Index a = b.weld_key[sm.vertex(e, 0)], c = b.weld_key[sm.vertex(e, 1)];
+      return a != kNoWeldKey && c != kNoWeldKey && seam.count({std::min(a, c), std::max(a, c)}) > 0;
+    };
+    std::vector<SurfaceMesh::Edge_index> border;
+    for (const auto e : sm.edges())
+      if (sm.is_border(e) && !is_seam(e)) border.push_back(e);
+    PMP::split_long_edges(border, 4.0 / 3.0 * target_edge_length, sm);
+    PMP::isotropic_remeshing(faces(sm), target_edge_length, sm, params.protect_constraints(true));
+  } else if (projection) {
+    auto project = [&](SurfaceMesh::Vertex_index v) { return projection->closest_point(sm.point(v)); };
+    PMP::isotropic_remeshing(faces(sm), target_edge_length, sm, params.projection_functor(project));
+  } else {
+    // Border edges are constrained by default: split and collapsed along the border only, and
+    // their vertices do not move (relax_constraints would cut the border's corners).
+    PMP::isotropic_remeshing(faces(sm), target_edge_length, sm, params);
+  }
+  return to_triangle_mesh(b);
 }
 
 }  // namespace
@@ -76,23 +178,17 @@ double median_edge_length(const TriangleMesh& mesh) {
 
 TriangleMesh isotropic_remesh(const TriangleMesh& mesh, double target_edge_length, int iterations,
                               BoundaryMode boundary) {
-  SurfaceMesh sm = to_surface_mesh(mesh);
   const auto nb_iter = static_cast<unsigned int>(iterations);
-  if (boundary == BoundaryMode::Keep) {
-    // Protected edges must not exceed 4/3 of the target (CGAL's precondition).
-    std::vector<SurfaceMesh::Edge_index> border;
-    for (const auto e : sm.edges())
-      if (sm.is_border(e)) border.push_back(e);
-    PMP::split_long_edges(border, 4.0 / 3.0 * target_edge_length, sm);
-    PMP::isotropic_remeshing(faces(sm), target_edge_length, sm,
-                             CGAL::parameters::number_of_iterations(nb_iter).protect_constraints(true));
-  } else {
-    // Border edges are constrained by default: split and collapsed along the border only, and
-    // their vertices do not move (relax_constraints would cut the border's corners).
-    PMP::isotropic_remeshing(faces(sm), target_edge_length, sm,
-                             CGAL::parameters::number_of_iterations(nb_iter));
-  }
-  return to_triangle_mesh(sm);
+  Remeshed first = remesh_cut_open(mesh, 0, target_edge_length, nb_iter,
+                                   boundary == BoundaryMode::Keep ? Border::Keep : Border::Resample);
+  if (!first.seam_face) return std::move(first.mesh);
+  // The seam kept the input's dense vertices, leaving thin triangles along it. A second
+  // round cuts along a seam half way round from the first, through remeshed triangles, and
+  // so remeshes the first seam's neighbourhood freely; the border, done, stays fixed, and
+  // vertices are projected onto the input as in the first round.
+  const SoupProjection onto_input(mesh);
+  return remesh_cut_open(first.mesh, *first.seam_face, target_edge_length, nb_iter, Border::Fixed, &onto_input)
+      .mesh;
 }
 
 }  // namespace envcrust::remesh

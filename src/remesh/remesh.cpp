@@ -57,7 +57,6 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options) {
     return finish("remeshing skipped: the mesh is not a manifold (" + std::to_string(before.non_manifold_edges) +
                   " non-manifold edges, " + std::to_string(before.non_manifold_vertices) +
                   " non-manifold vertices)");
-  if (!before.is_orientable) return finish("remeshing skipped: the mesh is not orientable");
   if (before.degenerate_faces + before.duplicate_faces + before.welded_vertices > 0)
     return finish("remeshing skipped: the mesh has degenerate or duplicate faces or repeated vertices");
 

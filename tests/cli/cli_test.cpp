@@ -168,14 +168,19 @@ TEST_F(CliTest, reconstruct_with_remesh_reports_faces_and_analyzes_the_remeshed_
   EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
   const auto again = run_envcrust("analyze " + path("c.ply") + " --json");
   EXPECT_EQ(nlohmann::json::parse(again.out)["faces"], m["faces_after"]);
-  // A Moebius band is written as extracted, with the warning.
-  const auto moebius = run_envcrust("reconstruct builtin:moebius -n 3000 --remesh --remesh-edge 0.1 --no-analysis -o " +
+  // A Moebius band is remeshed too (cut along a seam, welded back) and stays one.
+  const auto moebius = run_envcrust("reconstruct builtin:moebius -n 3000 --remesh --remesh-edge 0.1 -o " +
                                     path("m.ply") + " --json");
   ASSERT_EQ(moebius.exit_code, 0) << moebius.err;
   const auto mj = nlohmann::json::parse(moebius.out);
-  EXPECT_EQ(mj["remesh"]["is_remeshed"], false);
-  const auto& w = mj["warnings"];
-  EXPECT_NE(std::find(w.begin(), w.end(), "remeshing skipped: the mesh is not orientable"), w.end()) << w;
+  EXPECT_EQ(mj["remesh"]["is_remeshed"], true) << mj["warnings"];
+  EXPECT_LT(mj["remesh"]["faces_after"].get<std::size_t>(), mj["remesh"]["faces_before"].get<std::size_t>());
+  const auto& ma = mj["analysis"];
+  EXPECT_EQ(ma["faces"], mj["remesh"]["faces_after"]);
+  EXPECT_EQ(ma["euler_characteristic"], 0);
+  EXPECT_EQ(ma["boundary_loops"], 1);
+  EXPECT_EQ(ma["is_orientable"], false);
+  EXPECT_EQ(ma["is_manifold"], true);
 }
 
 TEST_F(CliTest, reconstruct_moebius_is_non_orientable_with_one_boundary) {

@@ -82,6 +82,7 @@ TEST_P(RemeshSheet, keeps_topology_knots_and_distance_with_fewer_better_triangle
   EXPECT_TRUE(result.warnings.empty());
   const auto& t = after.topology;
   EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.welded_vertices, 0u);  // no two vertices at one position (a Moebius seam is welded)
   EXPECT_EQ(t.components.size(), before.topology.components.size());
   EXPECT_EQ(t.euler_characteristic, before.topology.euler_characteristic);
   EXPECT_EQ(t.boundary_loops.size(), before.topology.boundary_loops.size());
@@ -115,7 +116,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{"trefoil-ribbon", remesh::BoundaryMode::Resample},
                       Case{"cylinder", remesh::BoundaryMode::Resample},
                       Case{"torus", remesh::BoundaryMode::Resample},
-                      Case{"hemisphere", remesh::BoundaryMode::Keep}),
+                      Case{"hemisphere", remesh::BoundaryMode::Keep},
+                      Case{"moebius", remesh::BoundaryMode::Resample},
+                      Case{"moebius", remesh::BoundaryMode::Keep}),
     [](const auto& info) {
       std::string name = info.param.surface;
       std::replace(name.begin(), name.end(), '-', '_');
@@ -160,14 +163,36 @@ TEST(Remesh, default_target_is_a_multiple_of_the_median_edge) {
   EXPECT_NEAR(result.stats.target_edge_length, 3.0 * 0.05, 1e-12);
 }
 
-TEST(Remesh, skips_a_moebius_sheet_with_a_warning) {
-  const auto sheet = sheet_of("moebius", 3000);
-  const auto result = remesh::remesh(sheet.mesh);
-  EXPECT_FALSE(result.stats.is_remeshed);
-  EXPECT_EQ(result.warnings, std::vector<std::string>{"remeshing skipped: the mesh is not orientable"});
-  EXPECT_EQ(result.mesh.vertices, sheet.mesh.vertices);
-  EXPECT_EQ(result.mesh.triangles, sheet.mesh.triangles);
-  EXPECT_EQ(result.stats.faces_after, result.stats.faces_before);
+// A non-orientable band is cut open along its orientation seam, remeshed with the seam held
+// fixed and welded back: one surface again, no doubled vertex, no extra border.
+TEST(Remesh, remeshes_a_moebius_band_through_its_seam) {
+  for (const auto mode : {remesh::BoundaryMode::Resample, remesh::BoundaryMode::Keep}) {
+    const TriangleMesh band = fixtures::moebius(120, 12);  // edges 0.05 to 0.08
+    remesh::RemeshOptions options;
+    options.target_edge_length = 0.12;
+    options.boundary = mode;
+    const auto result = remesh::remesh(band, options);
+    ASSERT_TRUE(result.stats.is_remeshed) << (result.warnings.empty() ? "" : result.warnings[0]);
+    EXPECT_TRUE(result.warnings.empty());
+    EXPECT_LT(2 * result.stats.faces_after, result.stats.faces_before);
+    topology::TopologyOptions as_indexed;
+    as_indexed.weld_identical_vertices = false;
+    for (const auto& t : {topology::analyze_topology(result.mesh), topology::analyze_topology(result.mesh, as_indexed)}) {
+      EXPECT_EQ(t.welded_vertices, 0u);
+      EXPECT_EQ(t.euler_characteristic, 0);
+      EXPECT_EQ(t.components.size(), 1u);
+      EXPECT_EQ(t.boundary_loops.size(), 1u);
+      EXPECT_FALSE(t.is_orientable);
+      EXPECT_TRUE(t.is_manifold());
+      EXPECT_EQ(t.degenerate_faces, 0u);
+    }
+    // Every output vertex stays on the band (projection onto the input).
+    for (const auto& p : result.mesh.vertices) {
+      const double r = std::hypot(p.x(), p.y());
+      EXPECT_LT(std::abs(r - 1.0), 0.41) << p;
+      EXPECT_LT(std::abs(p.z()), 0.41) << p;
+    }
+  }
 }
 
 TEST(Remesh, skips_a_non_manifold_mesh_with_a_warning) {
