@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <set>
 #include <utility>
 
@@ -61,18 +60,18 @@ Built to_surface_mesh(const CutMesh& cut) {
   return b;
 }
 
-// A remeshed mesh, welded, and one of its faces at the seam it was cut along (none for an
-// empty seam).
+// A remeshed mesh, welded, and its faces at the seam it was cut along (none for an empty
+// seam).
 struct Remeshed {
   TriangleMesh mesh;
-  std::optional<std::uint32_t> seam_face;
+  std::vector<std::uint32_t> seam_faces;
 };
 
 // Back to an indexed mesh without unused vertices, the two sides of the seam welded.
 Remeshed to_triangle_mesh(const Built& b) {
   const SurfaceMesh& sm = b.sm;
   TriangleMesh out;
-  std::optional<std::uint32_t> seam_face;
+  std::vector<std::uint32_t> seam_faces;
   std::vector<Index> key;
   constexpr Index unused = std::numeric_limits<Index>::max();
   std::vector<Index> index(sm.num_vertices() + sm.number_of_removed_vertices(), unused);
@@ -85,20 +84,21 @@ Remeshed to_triangle_mesh(const Built& b) {
         out.vertices.push_back(sm.point(v));
         key.push_back(b.weld_key[v]);
       }
-      if (b.on_seam[v] && !seam_face) seam_face = static_cast<std::uint32_t>(out.triangles.size());
+      if (b.on_seam[v] && (seam_faces.empty() || seam_faces.back() != out.triangles.size()))
+        seam_faces.push_back(static_cast<std::uint32_t>(out.triangles.size()));
       if (k < 3) tri[k] = index[v];
       ++k;
     }
     if (k != 3) throw NumericalFailure("remeshing: CGAL returned a face with " + std::to_string(k) + " vertices");
     out.triangles.push_back(tri);
   }
-  return {weld(out, key), seam_face};  // welding keeps the faces and their order
+  return {weld(out, key), std::move(seam_faces)};  // welding keeps the faces and their order
 }
 
 // What one remeshing round does to the true border: as the BoundaryMode says, or nothing.
 enum class Border { Resample, Keep, Fixed };
 
-// One remeshing of the mesh cut open along the seam of a greedy orientation from first_face.
+// One remeshing of the mesh cut open along the seam of a greedy orientation from first_faces.
 // The seam stays as it is (only split to the target, the same on both sides): its vertices
 // are constrained, so they neither move nor go, and its edges, no longer than the target and
 // between fixed vertices, are neither split nor collapsed in either mode. Border::Fixed
@@ -124,9 +124,10 @@ class SoupProjection {
   CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree_;
 };
 
-Remeshed remesh_cut_open(const TriangleMesh& mesh, std::uint32_t first_face, double target_edge_length,
+Remeshed remesh_cut_open(const TriangleMesh& mesh, const std::vector<std::uint32_t>& first_faces,
+                         double target_edge_length,
                          unsigned int iterations, Border border_mode, const SoupProjection* projection = nullptr) {
-  CutMesh cut = cut_along_seam(mesh, first_face);
+  CutMesh cut = cut_along_seam(mesh, first_faces);
   split_long_seam_edges(cut, target_edge_length);
   Built b = to_surface_mesh(cut);
   SurfaceMesh& sm = b.sm;
@@ -179,15 +180,16 @@ double median_edge_length(const TriangleMesh& mesh) {
 TriangleMesh isotropic_remesh(const TriangleMesh& mesh, double target_edge_length, int iterations,
                               BoundaryMode boundary) {
   const auto nb_iter = static_cast<unsigned int>(iterations);
-  Remeshed first = remesh_cut_open(mesh, 0, target_edge_length, nb_iter,
+  Remeshed first = remesh_cut_open(mesh, {}, target_edge_length, nb_iter,
                                    boundary == BoundaryMode::Keep ? Border::Keep : Border::Resample);
-  if (!first.seam_face) return std::move(first.mesh);
+  if (first.seam_faces.empty()) return std::move(first.mesh);
   // The seam kept the input's dense vertices, leaving thin triangles along it. A second
-  // round cuts along a seam half way round from the first, through remeshed triangles, and
+  // round, its search started at the first seam (in every piece that had one), cuts along a
+  // seam half way round from it, through remeshed triangles, and
   // so remeshes the first seam's neighbourhood freely; the border, done, stays fixed, and
   // vertices are projected onto the input as in the first round.
   const SoupProjection onto_input(mesh);
-  return remesh_cut_open(first.mesh, *first.seam_face, target_edge_length, nb_iter, Border::Fixed, &onto_input)
+  return remesh_cut_open(first.mesh, first.seam_faces, target_edge_length, nb_iter, Border::Fixed, &onto_input)
       .mesh;
 }
 

@@ -30,8 +30,9 @@ struct SeamSplit {
 };
 
 // +1 (as given) or -1 (reversed) per face, propagated breadth-first across two-face edges
-// from `first_face`, then from the first face of every other component.
-std::vector<signed char> orient_greedily(const topology::MeshGraph& g, std::uint32_t first_face) {
+// from each of `first_faces` not reached yet, then from the first face of every component
+// left.
+std::vector<signed char> orient_greedily(const topology::MeshGraph& g, const std::vector<std::uint32_t>& first_faces) {
   std::vector<signed char> sign(g.faces.size(), 0);
   std::queue<std::uint32_t> queue;
   auto grow = [&](std::uint32_t seed) {
@@ -54,17 +55,18 @@ std::vector<signed char> orient_greedily(const topology::MeshGraph& g, std::uint
       }
     }
   };
-  if (first_face < g.faces.size()) grow(first_face);
+  for (const std::uint32_t f : first_faces)
+    if (f < g.faces.size()) grow(f);
   for (std::uint32_t f = 0; f < g.faces.size(); ++f) grow(f);
   return sign;
 }
 
 }  // namespace
 
-CutMesh cut_along_seam(const TriangleMesh& mesh, std::uint32_t first_face) {
+CutMesh cut_along_seam(const TriangleMesh& mesh, const std::vector<std::uint32_t>& first_faces) {
   const std::size_t n = mesh.vertices.size();
   const auto graph = topology::build_mesh_graph(mesh.triangles, n);
-  const auto sign = orient_greedily(graph, first_face);
+  const auto sign = orient_greedily(graph, first_faces);
 
   CutMesh cut;
   auto& faces = cut.mesh.triangles;

@@ -34,14 +34,14 @@ struct CutMesh {
   std::size_t reversed_faces = 0;
 };
 
-/// Orient the faces greedily (breadth-first across two-face edges from `first_face`, which
-/// keeps its orientation, then likewise from the first face of each other component) and cut
-/// along the seam: the two-face edges whose faces then run them in the same direction. For an
-/// orientable mesh the seam is empty and only faces are reversed; for a Möbius strip it is a
-/// path of edges across the strip, about where the two fronts of the search meet, half way
-/// round from `first_face`; the cut mesh is a disc. The mesh must be a manifold without
-/// degenerate faces (checked by the caller).
-CutMesh cut_along_seam(const TriangleMesh& mesh, std::uint32_t first_face = 0);
+/// Orient the faces greedily (breadth-first across two-face edges from each of
+/// `first_faces` not reached yet, which keeps its orientation, then likewise from the first
+/// face of each component left) and cut along the seam: the two-face edges whose faces then
+/// run them in the same direction. For an orientable mesh the seam is empty and only faces
+/// are reversed; for a Möbius strip it is a path of edges across the strip, about where the
+/// two fronts of the search meet, half way round from where it started; the cut mesh is a
+/// disc. The mesh must be a manifold without degenerate faces (checked by the caller).
+CutMesh cut_along_seam(const TriangleMesh& mesh, const std::vector<std::uint32_t>& first_faces = {});
 
 /// Split every seam edge longer than `max_length` into equal pieces no longer than it, the
 /// same points on both sides (each side's face becomes a fan), so that the seam can be kept

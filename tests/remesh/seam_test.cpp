@@ -89,6 +89,25 @@ TEST(Seam, welding_the_cut_gives_back_the_input) {
   EXPECT_FALSE(t.is_orientable);
 }
 
+TEST(Seam, a_search_started_at_the_seam_cuts_half_way_round_from_it) {
+  const TriangleMesh band = fixtures::moebius(40, 4);
+  const auto first = remesh::cut_along_seam(band);
+  std::set<Index> first_seam;
+  for (const auto& [a, b] : first.seam_edges) first_seam.insert({a, b});
+  std::uint32_t at_seam = 0;
+  while (!first_seam.count(band.triangles[at_seam][0])) ++at_seam;
+  const auto second = remesh::cut_along_seam(band, {at_seam});
+  ASSERT_FALSE(second.seam_edges.empty());
+  // The band is 40 quads round: the new seam is some 20 quads away, sharing no vertex.
+  for (const auto& [a, b] : second.seam_edges) {
+    EXPECT_FALSE(first_seam.count(a)) << a;
+    EXPECT_FALSE(first_seam.count(b)) << b;
+  }
+  const auto t = topology_as_indexed(second.mesh);
+  EXPECT_TRUE(t.is_orientable);
+  EXPECT_EQ(t.euler_characteristic, 1);
+}
+
 TEST(Seam, an_orientable_mesh_has_no_seam_and_only_gets_its_flipped_faces_reversed) {
   TriangleMesh m = fixtures::open_cylinder(24, 6);
   for (std::size_t f = 5; f < m.triangles.size(); f += 7) std::swap(m.triangles[f][0], m.triangles[f][1]);
