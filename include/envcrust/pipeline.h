@@ -36,8 +36,9 @@ struct ReconstructOptions {
   /// Also run the Power Crust on the envelope samples and report its topology as a
   /// self-check (chi(E) = 2 chi(M), METHOD.md F3). Costs about one more reconstruction.
   bool use_envelope_crust_check = false;
-  /// Remesh the result isotropically as a last step (keeps its topology and boundary; skipped
-  /// with a warning for non-orientable or non-manifold results). nullopt: no remeshing.
+  /// Remesh the result isotropically as a last step (keeps its topology and boundary; a
+  /// non-orientable result is cut along a seam and welded back; skipped with a warning for
+  /// non-manifold results). nullopt: no remeshing.
   std::optional<remesh::RemeshOptions> remesh;
 };
 
