@@ -35,18 +35,24 @@ struct SheetOptions {
   /// the envelope bridges (the foot scan's sole). Off when the boundary curves are incomplete
   /// and the sheet should show the rest (holes still filled then: only short ones).
   bool use_fill_away_from_boundary = true;
-  /// Move interior vertices onto the tangent plane of their nearest surface sample and
-  /// border vertices onto the nearest boundary curve, when no incident face flips.
+  /// Move interior vertices onto the sampled surface (a weighted least-squares quadric fitted
+  /// to their nearest samples' positions and normals) and border vertices onto the nearest
+  /// boundary curve, when no incident face folds over in the surface's tangent plane.
   bool use_projection = true;
-  /// Tangent planes averaged per projected vertex (inverse-distance weights) on clean samples.
+  /// Samples per quadric fit on clean samples ...
   int projection_neighbors = 6;
-  /// ... and on noisy ones (EnvelopeSamples::noise above `noisy_rel_rho` * rho), where the
-  /// planes follow the noise: measured at 10k points, sigma 0.25% of the diagonal, 24 planes
-  /// cut the largest mesh-to-truth distance by a fifth (trefoil ribbon 0.61% -> 0.49%, torus
-  /// 0.64% -> 0.54%), while on exact samples they double it (trefoil 0.03% -> 0.04%,
-  /// torus 0.14% -> 0.20%). Both >= 1.
-  int noisy_projection_neighbors = 24;
+  /// ... and on noisy ones (EnvelopeSamples::noise above `noisy_rel_rho` * rho), where the fit
+  /// averages the noise over its neighbourhood: measured at 10k points, sigma 0.25% of the
+  /// diagonal (seed 3), the largest mesh-to-truth distance is 0.31-0.37% with 12 samples,
+  /// 0.21-0.28% with 24, 0.14-0.19% with 48 and 0.12-0.16% with 96 (horn, trefoil and
+  /// unknot ribbons, saddle, torus, cylinder), at 1.2-1.5 times the projection time of 48.
+  /// Both >= 1.
+  int noisy_projection_neighbors = 48;
   double noisy_rel_rho = 0.05;
+  /// A projection or snap refused because a face would fold is retried up to this many
+  /// times, after the neighbours have moved (a rough, noisy sheet unfolds as its vertices
+  /// come down onto the surface). >= 0.
+  int projection_retry_rounds = 4;
 };
 
 /// What extract_sheet did.

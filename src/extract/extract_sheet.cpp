@@ -28,6 +28,7 @@ void validate(const SheetOptions& o) {
   if (!(o.projection_neighbors >= 1)) fail("projection_neighbors", o.projection_neighbors);
   if (!(o.noisy_projection_neighbors >= 1)) fail("noisy_projection_neighbors", o.noisy_projection_neighbors);
   if (!(o.noisy_rel_rho >= 0)) fail("noisy_rel_rho", o.noisy_rel_rho);
+  if (!(o.projection_retry_rounds >= 0)) fail("projection_retry_rounds", o.projection_retry_rounds);
   if (!(o.max_face_distance_rel_rho >= 0)) fail("max_face_distance_rel_rho", o.max_face_distance_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
 }
@@ -89,7 +90,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     const bool is_noisy = envelope.noise > options.noisy_rel_rho * envelope.rho;
     const auto moved = project_onto_samples(
         sheet, surface, envelope.rho,
-        static_cast<unsigned>(is_noisy ? options.noisy_projection_neighbors : options.projection_neighbors));
+        static_cast<unsigned>(is_noisy ? options.noisy_projection_neighbors : options.projection_neighbors),
+        static_cast<unsigned>(options.projection_retry_rounds));
     trim_beyond_boundary(sheet, surface, 2.0 * envelope.rho);
     // Trimming cuts off crumbs and leaves pinholes where single faces reached past the
     // boundary.
@@ -106,7 +108,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     }
     result.stats.vertices_split += split_pinched_vertices(sheet);
     compact_vertices(sheet);
-    const auto snapped = snap_border(sheet, surface, envelope.rho);
+    const auto snapped = snap_border(sheet, surface, envelope.rho,
+                                      static_cast<unsigned>(options.projection_retry_rounds));
     result.stats.vertices_projected = moved.moved + snapped.moved;
     result.stats.projections_refused = moved.refused + snapped.refused;
   }

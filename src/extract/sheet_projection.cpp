@@ -5,6 +5,9 @@
 #include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
 
+#include <Eigen/Dense>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -18,9 +21,13 @@ Vector3 face_normal(const TriangleMesh& m, const std::array<Index, 3>& f, Index 
   return CGAL::cross_product(pos(f[1]) - pos(f[0]), pos(f[2]) - pos(f[0]));
 }
 
-// Apply the move, or half of it, when no incident face flips or shrinks below a fifth.
+// Apply the move, or half of it, when no incident face flips or shrinks below a fifth. A face
+// flips when its normal turns by more than 90 degrees, or, given an `axis` (the surface
+// normal along which the vertex moves), when its normal's component along the axis changes
+// sign: a face of a rough sheet that stands steep may tilt over to the other side while it
+// comes down flat onto the surface, and that is no fold.
 bool move_if_safe(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>& faces_of, Index v,
-                  const Point3& target) {
+                  const Point3& target, const std::optional<Vector3>& axis = std::nullopt) {
   const Point3 start = m.vertices[v];
   for (double fraction : {1.0, 0.5}) {
     const Point3 at = fraction == 1.0 ? target : start + fraction * (target - start);
@@ -28,7 +35,9 @@ bool move_if_safe(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>
     for (auto f : faces_of[v]) {
       const Vector3 before = face_normal(m, m.triangles[f], v, start);
       const Vector3 after = face_normal(m, m.triangles[f], v, at);
-      if (before * after <= 0.0 || after.squared_length() < 0.04 * before.squared_length()) {
+      const bool flips = axis && axis->squared_length() > 0.0 ? (before * *axis) * (after * *axis) < 0.0
+                                                             : before * after <= 0.0;
+      if (flips || after.squared_length() < 0.04 * before.squared_length()) {
         ok = false;
         break;
       }
@@ -41,26 +50,66 @@ bool move_if_safe(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>
   return false;
 }
 
-// Offset of x from M estimated from the tangent planes of its nearest samples (normal lines
-// aligned with the nearest one), inverse-distance weighted.
-Point3 onto_tangent_planes(const Point3& x, const envelope::SurfaceSamples& s, const NearestIndex& index,
-                           unsigned neighbors) {
+// The point of M below x from a weighted least-squares quadric over its `neighbors` nearest
+// samples: in a frame with the mean sample normal as height axis and x at the origin, the
+// height z(u, v) = c0 + c1 u + c2 v + c3 u^2 + c4 uv + c5 v^2 is fitted to the samples'
+// heights and to the slopes their normals give (the normals fix the tilt and curvature,
+// which a fit to noisy heights alone leaves uncertain, most at one-sided neighbourhoods near
+// the boundary), and x moves to c0. Weights (1 - d^2 / h^2)^2, h = sqrt(2) times the
+// distance to the farthest neighbour, nearly uniform over the neighbourhood: each sample's
+// noise counts about equally, and more neighbours average it out.
+Point3 onto_local_fit(const Point3& x, const envelope::SurfaceSamples& s, const NearestIndex& index,
+                      unsigned neighbors) {
   const auto hits = index.nearest(x, neighbors);
-  const Vector3 reference = s.normals[hits.front().first];
-  Vector3 shift(0, 0, 0);
-  double weight = 0.0;
-  for (const auto& [i, d] : hits) {
-    Vector3 n = s.normals[i];
-    if (n * reference < 0) n = -n;
-    const double w = 1.0 / (d * d + 1e-24);
-    shift = shift + w * ((x - s.points[i]) * n) * n;
-    weight += w;
+  const double h2 = std::max(2.0 * hits.back().second * hits.back().second, 1e-300);
+  std::vector<double> w(hits.size());
+  const Vector3 nearest_normal = s.normals[hits.front().first];
+  Vector3 normal(0, 0, 0);
+  for (std::size_t j = 0; j < hits.size(); ++j) {
+    const double t = 1.0 - hits[j].second * hits[j].second / h2;
+    w[j] = t * t;
+    const Vector3& n = s.normals[hits[j].first];
+    normal = normal + (n * nearest_normal < 0 ? -w[j] : w[j]) * n;
   }
-  return x - shift / weight;
+  if (normal.squared_length() == 0.0) return x;
+  normal = normal / std::sqrt(normal.squared_length());
+  const Eigen::Vector3d nz(normal.x(), normal.y(), normal.z());
+  const Eigen::Vector3d e1 = nz.unitOrthogonal(), e2 = nz.cross(e1);
+  // Slopes are scaled by the bandwidth so that both kinds of rows are lengths.
+  const double scale = std::sqrt(h2);
+  Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
+  auto add_row = [&](const Eigen::Matrix<double, 6, 1>& row, double value, double weight) {
+    ata += weight * row * row.transpose();
+    atb += weight * value * row;
+  };
+  for (std::size_t j = 0; j < hits.size(); ++j) {
+    const Vector3 d = s.points[hits[j].first] - x;
+    const Eigen::Vector3d dv(d.x(), d.y(), d.z());
+    const double u = dv.dot(e1), v = dv.dot(e2), z = dv.dot(nz);
+    Eigen::Matrix<double, 6, 1> row;
+    row << 1.0, u, v, u * u, u * v, v * v;
+    add_row(row, z, w[j]);
+    const Vector3& n = s.normals[hits[j].first];
+    Eigen::Vector3d nv(n.x(), n.y(), n.z());
+    if (nv.dot(nz) < 0) nv = -nv;
+    const double nn = nv.dot(nz);
+    if (nn < 0.5) continue;  // a normal far off the mean gives no usable slope
+    row << 0.0, 1.0, 0.0, 2.0 * u, v, 0.0;
+    add_row(scale * row, -scale * nv.dot(e1) / nn, w[j]);
+    row << 0.0, 0.0, 1.0, 0.0, u, 2.0 * v;
+    add_row(scale * row, -scale * nv.dot(e2) / nn, w[j]);
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(ata);
+  if (solver.info() != Eigen::Success) return x;
+  const Eigen::Matrix<double, 6, 1> c = solver.solve(atb);
+  if (!c.allFinite()) return x;
+  return x + c(0) * normal;
 }
 
 struct BoundaryPolylines {
   std::vector<Point3> points;
+  std::vector<Vector3> normals;  // of the surface, per point
   std::vector<std::size_t> curve_start, curve_of;  // per point: its curve; per curve: first point
   std::vector<std::size_t> curve_size;
   std::vector<double> arc;           // per point: arc length from its curve's first point
@@ -133,6 +182,7 @@ BoundaryPolylines polylines_of(const envelope::SurfaceSamples& surface) {
     for (std::size_t k = 0; k < vertices.size(); ++k) {
       if (k > 0) arc += std::sqrt(CGAL::squared_distance(vertices[k - 1].position, vertices[k].position));
       boundary.points.push_back(vertices[k].position);
+      boundary.normals.push_back(vertices[k].normal);
       boundary.curve_of.push_back(c);
       boundary.arc.push_back(arc);
     }
@@ -146,22 +196,45 @@ BoundaryPolylines polylines_of(const envelope::SurfaceSamples& surface) {
 }  // namespace
 
 ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSamples& surface,
-                                     double max_move, unsigned neighbors) {
+                                     double max_move, unsigned neighbors, unsigned retry_rounds) {
   ProjectionStats stats;
   auto& m = t.mesh;
   const auto faces_of = faces_of_vertices(m);
   const auto is_border = border_vertices(m, border_loops(m));
   const NearestIndex samples(surface.points);
-  for (Index v = 0; v < m.vertices.size(); ++v) {
-    if (faces_of[v].empty() || is_border[v]) continue;
-    const Point3 target = onto_tangent_planes(m.vertices[v], surface, samples, neighbors);
-    if (CGAL::squared_distance(target, m.vertices[v]) > max_move * max_move) continue;
-    if (move_if_safe(m, faces_of, v, target)) {
-      ++stats.moved;
-    } else {
-      ++stats.refused;
+  // Each target depends on the vertex's own (unmoved) position only.
+  std::vector<Point3> targets(m.vertices.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.vertices.size(), 256), [&](const auto& range) {
+    for (std::size_t v = range.begin(); v != range.end(); ++v)
+      if (!faces_of[v].empty() && !is_border[v])
+        targets[v] = onto_local_fit(m.vertices[v], surface, samples, neighbors);
+  });
+  // A move that would flip a face of a rough (noisy) sheet often becomes safe once the
+  // neighbours have moved: refused and halved moves are retried for a few rounds.
+  std::vector<Index> pending;
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    if (!faces_of[v].empty() && !is_border[v] &&
+        CGAL::squared_distance(targets[v], m.vertices[v]) <= max_move * max_move)
+      pending.push_back(v);
+  const std::size_t eligible = pending.size();
+  std::vector<char> moved(m.vertices.size(), 0);
+  for (unsigned round = 0; round <= retry_rounds && !pending.empty(); ++round) {
+    std::vector<Index> again;
+    bool progress = false;
+    for (Index v : pending) {
+      const Vector3 axis = targets[v] - m.vertices[v];
+      const bool ok = move_if_safe(m, faces_of, v, targets[v], axis);
+      if (ok) {
+        progress = true;
+        if (!moved[v]) ++stats.moved;
+        moved[v] = 1;
+      }
+      if (m.vertices[v] != targets[v]) again.push_back(v);
     }
+    if (!progress) break;
+    pending.swap(again);
   }
+  stats.refused = eligible - stats.moved;
   return stats;
 }
 
@@ -259,7 +332,8 @@ std::vector<Index> out_of_order_snaps(const std::vector<topology::BoundaryLoop>&
 
 }  // namespace
 
-ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surface, double max_move) {
+ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surface, double max_move,
+                            unsigned retry_rounds) {
   ProjectionStats stats;
   if (surface.boundary.empty()) return stats;
   auto& m = t.mesh;
@@ -275,17 +349,41 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   smooth_border_loops(m, faces_of, loops, corners);
   const std::vector<Point3> before = m.vertices;
   std::vector<std::optional<CurvePoint>> snap(m.vertices.size());
+  // Flips are judged in the surface's tangent plane at the nearest curve point; a refused
+  // (or halved) snap is retried after its neighbours have snapped.
+  std::vector<std::pair<Index, CurvePoint>> pending;
   for (Index v = 0; v < m.vertices.size(); ++v) {
     if (faces_of[v].empty() || !is_border[v]) continue;
     const CurvePoint target = onto_boundary(m.vertices[v], boundary, index);
     if (CGAL::squared_distance(target.point, m.vertices[v]) > max_move * max_move) continue;
-    if (move_if_safe(m, faces_of, v, target.point) && m.vertices[v] == target.point) {
-      snap[v] = target;
-      ++stats.moved;
-    } else {
-      ++stats.refused;
-    }
+    pending.emplace_back(v, target);
   }
+  for (unsigned round = 0; round <= retry_rounds && !pending.empty(); ++round) {
+    std::vector<std::pair<Index, CurvePoint>> again;
+    bool progress = false;
+    for (const auto& [v, target] : pending) {
+      const Vector3 axis = boundary.normals[index.nearest(target.point).first];
+      progress |= move_if_safe(m, faces_of, v, target.point, axis);
+      if (m.vertices[v] == target.point)
+        snap[v] = target;
+      else
+        again.emplace_back(v, target);
+    }
+    if (!progress) break;
+    pending.swap(again);
+  }
+  // A snap that still folds a face moves along the surface normal only, which keeps each
+  // face's orientation in the tangent plane: the vertex comes onto the surface, short of
+  // the curve.
+  for (const auto& [v, target] : pending) {
+    Vector3 axis = boundary.normals[index.nearest(target.point).first];
+    if (axis.squared_length() == 0.0) continue;
+    axis = axis / std::sqrt(axis.squared_length());
+    move_if_safe(m, faces_of, v, m.vertices[v] + ((target.point - m.vertices[v]) * axis) * axis, axis);
+  }
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    if (snap[v]) ++stats.moved;
+  stats.refused = pending.size();
   // Undo the snaps that reverse the loop's order along the curve, until none is left.
   for (int round = 0; round < 8; ++round) {
     const auto bad = out_of_order_snaps(loops, snap, boundary);

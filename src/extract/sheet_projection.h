@@ -10,11 +10,13 @@ struct ProjectionStats {
   std::size_t refused = 0;
 };
 
-/// Interior (non-border) vertices move onto the weighted tangent planes of their `neighbors`
-/// nearest samples when the move is below `max_move`; a move that would flip or collapse an
-/// incident face is halved, then refused.
+/// Interior (non-border) vertices move onto a weighted least-squares quadric fitted to the
+/// positions and normals of their `neighbors` nearest samples when the move is below
+/// `max_move`; a move that would fold an incident face over in the tangent plane (or collapse
+/// it) is halved, then refused, and refused or halved moves are retried up to `retry_rounds`
+/// times after the other vertices have moved.
 ProjectionStats project_onto_samples(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
-                                     double max_move, unsigned neighbors);
+                                     double max_move, unsigned neighbors, unsigned retry_rounds);
 
 /// Cut away what lies beyond the boundary curves: the level (x - b) . c, b the nearest point of
 /// a boundary curve (within `reach`) and c its outward conormal, is trimmed at zero. The
@@ -23,8 +25,10 @@ ProjectionStats project_onto_samples(TaggedMesh& tagged, const envelope::Surface
 std::size_t trim_beyond_boundary(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
                                  double reach);
 
-/// Border vertices move onto the nearest point of the boundary curves, checked as above.
+/// Border vertices move onto the nearest point of the boundary curves, checked as above (in
+/// the tangent plane of the surface at the curve point, with retries); a vertex whose snap
+/// still folds a face moves along the surface normal only.
 ProjectionStats snap_border(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
-                            double max_move);
+                            double max_move, unsigned retry_rounds);
 
 }  // namespace envcrust::extract
