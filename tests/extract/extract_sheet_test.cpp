@@ -148,3 +148,52 @@ TEST(SheetOfNoisySamples, issue_5_cylinder_rims_do_not_cross_themselves) {
     EXPECT_EQ(knots::to_string(loop.knot->type), "unknot");
   }
 }
+
+// issue 5 quality bar: from 10k samples with Gaussian noise of 0.25% of the diagonal the
+// sheet keeps the topology and stays within 0.5% of the surface. With tangent planes
+// weighted by inverse distance and folds judged in 3D (faces of the rough sheet refused the
+// projection), mesh to truth was 0.60% (horn) and 0.56% (unknot ribbon; a border vertex
+// whose snap folded a face kept its noisy height).
+class SheetOfNoisyBuiltin : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SheetOfNoisyBuiltin, issue_5_stays_within_half_a_percent_of_the_surface) {
+  const auto surface = surfaces::make_builtin(GetParam());
+  const auto samples = fixtures::builtin_samples(GetParam(), 10000, 0.0025, 3);
+  envelope::EnvelopeOptions eo;
+  eo.seed = 3;
+  const auto env = envelope::sample_envelope(samples, eo);
+  const auto sheet = extract::extract_sheet(env, samples);
+  analysis::Reference reference;
+  reference.mesh = surfaces::tessellate(*surface);
+  for (const auto& c : samples.boundary) reference.boundary.push_back(c.polyline());
+  analysis::AnalyzeOptions ao;
+  ao.distance.samples = 20000;
+  const auto report = analysis::analyze_mesh(sheet.mesh, reference, ao);
+  const auto& t = report.topology;
+  const auto expected = surface->expected_topology();
+  const double mesh_to_truth = report.distance->relative(report.distance->mesh_to_reference.max);
+  const double truth_to_mesh = report.distance->relative(report.distance->reference_to_mesh.max);
+  std::printf("%s: rho %.4f noise %.4f chi %ld loops %zu | m->r %.3f%% r->m %.3f%% | proj %zu/%zu\n",
+              GetParam().c_str(), env.rho, env.noise, t.euler_characteristic, t.boundary_loops.size(),
+              100 * mesh_to_truth, 100 * truth_to_mesh, sheet.stats.vertices_projected,
+              sheet.stats.projections_refused);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, expected.euler_characteristic);
+  EXPECT_EQ(static_cast<int>(t.boundary_loops.size()), expected.boundary_loops);
+  EXPECT_EQ(t.is_orientable, expected.is_orientable);
+  ASSERT_EQ(report.loops.size(), expected.boundary_knots.size());
+  for (std::size_t i = 0; i < report.loops.size(); ++i) {
+    ASSERT_TRUE(report.loops[i].knot.has_value());
+    EXPECT_EQ(knots::to_string(report.loops[i].knot->type), expected.boundary_knots[i]);
+  }
+  EXPECT_LT(mesh_to_truth, 0.005);
+  EXPECT_LT(truth_to_mesh, 0.005);
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, SheetOfNoisyBuiltin, ::testing::Values("horn", "unknot-ribbon"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
