@@ -43,10 +43,10 @@ struct SheetOptions {
   int projection_neighbors = 6;
   /// ... and on noisy ones (EnvelopeSamples::noise above `noisy_rel_rho` * rho), where the fit
   /// averages the noise over its neighbourhood: measured at 10k points, sigma 0.25% of the
-  /// diagonal (seed 3), the largest mesh-to-truth distance is 0.31-0.37% with 12 samples,
-  /// 0.21-0.28% with 24, 0.14-0.19% with 48 and 0.12-0.16% with 96 (horn, trefoil and
-  /// unknot ribbons, saddle, torus, cylinder), at 1.2-1.5 times the projection time of 48.
-  /// Both >= 1.
+  /// diagonal (seed 3), the largest mesh-to-truth distance is 0.31-0.37% with 12 samples and
+  /// 0.14-0.19% with 48 (horn, trefoil and unknot ribbons, saddle, torus, cylinder); 96 gave
+  /// 0.12-0.16% where the border did not limit it, at more time. On exact samples 6 give
+  /// 0.005-0.025% (10k, the smooth built-ins). Both >= 1.
   int noisy_projection_neighbors = 48;
   double noisy_rel_rho = 0.05;
   /// A projection or snap refused because a face would fold is retried up to this many
