@@ -36,6 +36,7 @@ struct Args {
   std::vector<std::size_t> sizes = {10000, 100000, 1000000};
   std::vector<std::string> surfaces = {"sphere", "torus"};
   double noise = 0.0;
+  double joggle = powercrust::PowerCrustOptions().pole_joggle_rel_radius;
   bool check = false;
   std::size_t parallel_from = powercrust::PowerCrustOptions().parallel_insertion_from;
 };
@@ -72,10 +73,12 @@ Args parse(int argc, char** argv) {
       a.noise = std::stod(argv[++i]);
     } else if (key == "--parallel-from" && has_value) {
       a.parallel_from = std::stoul(argv[++i]);
+    } else if (key == "--joggle" && has_value) {
+      a.joggle = std::stod(argv[++i]);
     } else if (key == "--check") {
       a.check = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--sizes a,b] [--surfaces s,t] [--noise x] [--parallel-from n] [--check]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes a,b] [--surfaces s,t] [--noise x] [--joggle x] [--parallel-from n] [--check]\n", argv[0]);
       std::exit(2);
     }
   }
@@ -114,6 +117,7 @@ Measurement run_power_crust(const std::vector<Point3>& points, const Args& args)
   Measurement m;
   powercrust::PowerCrustOptions options;
   options.parallel_insertion_from = args.parallel_from;
+  options.pole_joggle_rel_radius = args.joggle;
   Progress progress;
   const char* stage_names[] = {"delaunay", "poles", "power_diagram", "labeling", "crust", "power_shape"};
   take_peak_mb();

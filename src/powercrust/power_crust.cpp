@@ -83,7 +83,8 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   clock.begin("power_diagram");
   const CGAL::Bbox_3 sample_box = CGAL::bbox_3(result.samples.begin(), result.samples.end());
   const PowerDiagram diagram =
-      build_power_diagram(result.poles, sample_box, parallel(result.poles.size()));
+      build_power_diagram(result.poles, sample_box, parallel(result.poles.size()),
+                          options.pole_joggle_rel_radius);
   stats.power_diagram_cells = diagram.rt->number_of_finite_cells();
   stats.seconds_power_diagram = clock.lap("power_diagram");
 

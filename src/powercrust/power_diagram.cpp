@@ -43,7 +43,26 @@ void gather_block(const PowerDiagram& diagram, std::size_t begin, std::size_t en
   }
 }
 
+// A uniform number in [-1, 1) from a 64-bit key (splitmix64 finaliser).
+double hashed_unit(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  return 2.0 * (static_cast<double>(x >> 11) * 0x1.0p-53) - 1.0;
+}
+
 }  // namespace
+
+Kernel::Weighted_point_3 power_site(const Pole& pole, Index id, double joggle) {
+  const Point3& c = pole.center;
+  const double amount = joggle * pole.radius;
+  const std::uint64_t key = 3 * static_cast<std::uint64_t>(id);
+  const Point3 moved = amount > 0 ? Point3(c.x() + amount * hashed_unit(key), c.y() + amount * hashed_unit(key + 1),
+                                           c.z() + amount * hashed_unit(key + 2))
+                                  : c;
+  return {moved, pole.radius * pole.radius};
+}
 
 double intersection_weight(const Pole& p, const Pole& q) {
   const double den = 2.0 * p.radius * q.radius;
@@ -52,14 +71,15 @@ double intersection_weight(const Pole& p, const Pole& q) {
          den;
 }
 
-PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel) {
+PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel,
+                                 double joggle) {
   using Weighted = Kernel::Weighted_point_3;
   std::vector<std::pair<Weighted, Index>> input;
   input.reserve(poles.size());
   for (std::size_t i = 0; i < poles.size(); ++i)
-    input.emplace_back(Weighted(poles[i].center, poles[i].radius * poles[i].radius),
-                       static_cast<Index>(i));
+    input.emplace_back(power_site(poles[i], static_cast<Index>(i), joggle), static_cast<Index>(i));
   PowerDiagram out;
+  out.joggle = joggle;
   {
     Regular::Lock_data_structure lock(lock_box, 50);
     out.rt = std::make_unique<Regular>(Kernel(), parallel ? &lock : nullptr);

@@ -31,12 +31,19 @@ using RtVertex = Regular::Vertex_handle;
 struct PowerDiagram {
   std::unique_ptr<Regular> rt;
   std::vector<RtVertex> vertex_of_pole;
+  double joggle = 0.0;  ///< the sites' offset bound relative to the radius (PowerCrustOptions)
 };
+
+/// The weighted point pole `id` is inserted as: its centre moved by a pseudo-random offset of
+/// up to `joggle` x radius per coordinate (a hash of the id: the same bits every time), weight radius^2.
+/// The poles themselves keep their exact centres.
+Kernel::Weighted_point_3 power_site(const Pole& pole, Index id, double joggle);
 
 /// Build the power diagram (parallel insertion when `parallel`, with a lock grid over
 /// `lock_box`: the samples' box, where most poles are; far outer poles share border cells)
-/// and set Pole::is_hidden.
-PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel);
+/// of the sites power_site(pole, id, joggle), and set Pole::is_hidden.
+PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel,
+                                 double joggle);
 
 /// Adjacency of the poles through finite regular-triangulation edges (compressed rows). The
 /// edge weight w_pq (intersection_weight) is computed when needed, not stored: at 1M samples
