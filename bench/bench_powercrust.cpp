@@ -184,9 +184,11 @@ std::pair<Measurement, double> in_child(Work&& work) {
   rusage usage{};
   wait4(pid, &status, 0, &usage);
   if (!ok) std::fprintf(stderr, "child failed (status %d)\n", status);
-  // The stage peaks reset the kernel's high-water mark, so the run's peak is their maximum.
+  // The stage peaks reset the kernel's high-water mark (so ru_maxrss only covers what came
+  // after the last stage): a Power Crust run's peak is the largest stage peak, which leaves
+  // out sampling the input and the --check analysis.
   double peak = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  for (double stage : m.stage_peak_mb) peak = std::max(peak, stage);
+  if (m.stage_peak_mb[0] > 0) peak = *std::max_element(std::begin(m.stage_peak_mb), std::end(m.stage_peak_mb));
   return {m, peak};
 }
 
