@@ -37,12 +37,15 @@ std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& graph);
 std::vector<std::uint32_t> corner_fans(const MeshGraph& graph);
 
 /// Per face, +1 or -1 so that faces sharing a two-face edge traverse it in opposite
-/// directions; `is_orientable[c]` for each component c (components given per face).
+/// directions; `is_orientable[c]` for each component c (components given per face). The signs
+/// spread breadth-first from each of `first_faces` not reached yet (out-of-range ids are
+/// ignored), then from the first face of every piece left; on a non-orientable piece the
+/// edges where the fronts meet wrongly form a seam that starts from where the search began.
 struct Orientation {
   std::vector<signed char> face_sign;
   std::vector<bool> is_orientable;
 };
 Orientation orient_components(const MeshGraph& graph, const std::vector<std::uint32_t>& component,
-                              std::size_t num_components);
+                              std::size_t num_components, const std::vector<std::uint32_t>& first_faces = {});
 
 }  // namespace envcrust::topology

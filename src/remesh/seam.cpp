@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <queue>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -29,44 +28,13 @@ struct SeamSplit {
   std::vector<Point3> points;
 };
 
-// +1 (as given) or -1 (reversed) per face, propagated breadth-first across two-face edges
-// from each of `first_faces` not reached yet, then from the first face of every component
-// left.
-std::vector<signed char> orient_greedily(const topology::MeshGraph& g, const std::vector<std::uint32_t>& first_faces) {
-  std::vector<signed char> sign(g.faces.size(), 0);
-  std::queue<std::uint32_t> queue;
-  auto grow = [&](std::uint32_t seed) {
-    if (sign[seed] != 0) return;
-    sign[seed] = 1;
-    queue.push(seed);
-    while (!queue.empty()) {
-      const std::uint32_t f = queue.front();
-      queue.pop();
-      for (const std::uint32_t e : g.face_edges[f]) {
-        if (g.face_count_of_edge(e) != 2) continue;
-        const std::uint32_t begin = g.edge_face_begin[e];
-        const std::uint32_t other = g.edge_faces[begin] == f ? g.edge_faces[begin + 1] : g.edge_faces[begin];
-        if (sign[other] != 0) continue;
-        const auto [a, b] = g.edges[e];
-        // The neighbour must run the shared edge the other way.
-        sign[other] = static_cast<signed char>(-sign[f] * topology::direction_along(g.faces[f], a, b) *
-                                               topology::direction_along(g.faces[other], a, b));
-        queue.push(other);
-      }
-    }
-  };
-  for (const std::uint32_t f : first_faces)
-    if (f < g.faces.size()) grow(f);
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f) grow(f);
-  return sign;
-}
-
 }  // namespace
 
 CutMesh cut_along_seam(const TriangleMesh& mesh, const std::vector<std::uint32_t>& first_faces) {
   const std::size_t n = mesh.vertices.size();
   const auto graph = topology::build_mesh_graph(mesh.triangles, n);
-  const auto sign = orient_greedily(graph, first_faces);
+  const auto sign =
+      topology::orient_components(graph, std::vector<std::uint32_t>(graph.faces.size(), 0), 1, first_faces).face_sign;
 
   CutMesh cut;
   auto& faces = cut.mesh.triangles;

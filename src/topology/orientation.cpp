@@ -5,13 +5,13 @@
 
 namespace envcrust::topology {
 Orientation orient_components(const MeshGraph& g, const std::vector<std::uint32_t>& component,
-                              std::size_t num_components) {
+                              std::size_t num_components, const std::vector<std::uint32_t>& first_faces) {
   Orientation out;
   out.face_sign.assign(g.faces.size(), 0);
   out.is_orientable.assign(num_components, true);
   std::queue<std::uint32_t> queue;
-  for (std::uint32_t seed = 0; seed < g.faces.size(); ++seed) {
-    if (out.face_sign[seed] != 0) continue;
+  auto grow = [&](std::uint32_t seed) {
+    if (out.face_sign[seed] != 0) return;
     out.face_sign[seed] = 1;
     queue.push(seed);
     while (!queue.empty()) {
@@ -36,7 +36,10 @@ Orientation orient_components(const MeshGraph& g, const std::vector<std::uint32_
         }
       }
     }
-  }
+  };
+  for (const std::uint32_t f : first_faces)
+    if (f < g.faces.size()) grow(f);
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f) grow(f);
   return out;
 }
 
