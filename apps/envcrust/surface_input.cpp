@@ -12,15 +12,19 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace envcrust::cli {
 namespace {
 
 // Vertices with their area-weighted normal lines, plus face centres with face normals (the
 // faces carry the surface between vertices), and the mesh's border loops with frames.
-void load_mesh_samples(const TriangleMesh& mesh, const std::string& spec, LoadedSurface& out) {
+void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface& out) {
   if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
   out.source = "mesh";
+  if (const std::size_t dropped = mesh::remove_duplicate_faces(mesh); dropped > 0)
+    out.notes.push_back(std::to_string(dropped) + " repeated or degenerate faces dropped");
+  if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
   const auto vertex_normals = normals::mesh_vertex_normal_lines(mesh);
   try {
     out.samples.boundary = boundary::mesh_boundary_curves(mesh, vertex_normals);
@@ -79,7 +83,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     }
   }
   if (mesh) {
-    load_mesh_samples(*mesh, spec, out);
+    load_mesh_samples(std::move(*mesh), spec, out);
     return out;
   }
   PointSet points = io::read_points(spec);

@@ -21,6 +21,11 @@ TriangleMesh triangulate_polygons(const PolygonMesh& mesh);
 /// triangle uses. Triangle indices are remapped; triangle order is kept.
 TriangleMesh weld_identical_vertices(const TriangleMesh& mesh);
 
+/// Drop faces with a repeated vertex index and faces with the same vertex set as an earlier
+/// face (whatever their winding): scans often repeat triangles, which makes their edges look
+/// shared by more than two faces. Returns the number of faces dropped; order is kept.
+std::size_t remove_duplicate_faces(TriangleMesh& mesh);
+
 /// `count` points drawn uniformly by area on the triangles, deterministic for `seed`.
 std::vector<Point3> sample_by_area(const TriangleMesh& mesh, std::size_t count,
                                    std::uint64_t seed);

@@ -1,4 +1,5 @@
-// Welding of vertices with identical coordinates (exact), removal of unused vertices.
+// Welding of vertices with identical coordinates (exact), removal of unused vertices and of
+// repeated faces.
 #include "envcrust/mesh.h"
 
 #include <algorithm>
@@ -44,6 +45,28 @@ TriangleMesh weld_identical_vertices(const TriangleMesh& mesh) {
                              new_index[representative[t[2]]]});
   }
   return out;
+}
+
+std::size_t remove_duplicate_faces(TriangleMesh& mesh) {
+  std::vector<std::pair<std::array<Index, 3>, std::size_t>> keys;
+  keys.reserve(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    auto key = mesh.triangles[f];
+    std::sort(key.begin(), key.end());
+    keys.emplace_back(key, f);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> keep(mesh.triangles.size(), true);
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const auto& [key, f] = keys[k];
+    if (key[0] == key[1] || key[1] == key[2] || (k > 0 && keys[k - 1].first == key)) keep[f] = false;
+  }
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    if (keep[f]) mesh.triangles[kept++] = mesh.triangles[f];
+  const std::size_t dropped = mesh.triangles.size() - kept;
+  mesh.triangles.resize(kept);
+  return dropped;
 }
 
 }  // namespace envcrust::mesh

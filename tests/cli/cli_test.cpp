@@ -8,6 +8,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
 
 using envcrust::testing::CliTest;
 using envcrust::testing::run_envcrust;
@@ -309,6 +314,42 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   EXPECT_EQ(a["boundary_loops"], 1);
   EXPECT_EQ(a["is_orientable"], false);
   EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+}
+
+// Scans often repeat triangles (the face scan in ../shared/data has 18): they are dropped with
+// a note instead of making the mesh look non-manifold.
+TEST_F(CliTest, reconstruct_drops_repeated_faces_of_a_mesh) {
+  ASSERT_EQ(run_envcrust("sample cylinder --mesh -q -o " + path("c.off")).exit_code, 0);
+  std::string text;
+  {
+    std::ifstream in(path("c.off"));
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // Repeat the first face twice (once reversed): patch the face count and append the lines.
+  std::istringstream lines(text);
+  std::string header, counts, line;
+  std::getline(lines, header);
+  std::getline(lines, counts);
+  std::size_t v = 0, f = 0, e = 0;
+  std::istringstream(counts) >> v >> f >> e;
+  std::vector<std::string> body;
+  while (std::getline(lines, line)) body.push_back(line);
+  ASSERT_EQ(body.size(), v + f);
+  std::size_t n = 0, a = 0, b = 0, c = 0;
+  std::istringstream(body[v]) >> n >> a >> b >> c;
+  {
+    std::ofstream out(path("dup.off"));
+    out << "OFF\n" << v << ' ' << f + 2 << " 0\n";
+    for (const auto& l : body) out << l << '\n';
+    out << "3 " << a << ' ' << b << ' ' << c << "\n3 " << a << ' ' << c << ' ' << b << '\n';
+  }
+  const auto r = run_envcrust("reconstruct " + path("dup.off") + " -r builtin:cylinder -o " + path("r.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto notes = j["notes"].get<std::vector<std::string>>();
+  EXPECT_NE(std::find(notes.begin(), notes.end(), "2 repeated or degenerate faces dropped"), notes.end());
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
 }
 
 TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {

@@ -1,5 +1,6 @@
 // Tests of analyze_topology on generated meshes with known answers and on broken meshes.
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 #include "envcrust/topology.h"
 #include "fixtures/shapes.h"
 
@@ -105,6 +106,18 @@ TEST(OrientFaces, leaves_a_moebius_strip_with_one_seam) {
   EXPECT_GT(t.misoriented_edges, 0u);
   EXPECT_LE(t.misoriented_edges, 8u);  // one seam across the 4 rows: at most 2 edges per row
   EXPECT_EQ(t.euler_characteristic, 0);
+}
+
+TEST(RemoveDuplicateFaces, repeated_faces_in_any_winding_go_and_the_surface_comes_back) {
+  const auto original = fixtures::open_cylinder(24, 6);
+  auto m = original;
+  m.triangles.push_back(m.triangles[5]);                                   // the same again
+  m.triangles.push_back({m.triangles[7][0], m.triangles[7][2], m.triangles[7][1]});  // reversed
+  m.triangles.push_back({3, 3, 4});                                        // degenerate
+  ASSERT_GT(analyze_topology(m).non_manifold_edges, 0u);
+  EXPECT_EQ(mesh::remove_duplicate_faces(m), 3u);
+  EXPECT_EQ(m.triangles, original.triangles);  // first occurrences kept, in order
+  EXPECT_EQ(mesh::remove_duplicate_faces(m), 0u);
 }
 
 TEST(Topology, capping_a_cylinder_closes_it) {
