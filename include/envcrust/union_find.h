@@ -14,6 +14,9 @@ class UnionFind {
   }
   std::uint32_t find(std::uint32_t x);
   void unite(std::uint32_t a, std::uint32_t b);
+  /// Number the sets 0, 1, ... in order of their first element; `label[x]` gets x's set.
+  /// @returns the number of sets.
+  std::uint32_t label_sets(std::vector<std::uint32_t>& label);
 
  private:
   std::vector<std::uint32_t> parent_;

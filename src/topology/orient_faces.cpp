@@ -21,14 +21,8 @@ std::size_t orient_faces(TriangleMesh& mesh) {
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     if (g.face_count_of_edge(e) == 2)
       uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[g.edge_face_begin[e] + 1]);
-  std::vector<std::uint32_t> component(g.faces.size());
-  std::vector<std::uint32_t> id(g.faces.size(), UINT32_MAX);
-  std::uint32_t count = 0;
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
-    const std::uint32_t r = uf.find(f);
-    if (id[r] == UINT32_MAX) id[r] = count++;
-    component[f] = id[r];
-  }
+  std::vector<std::uint32_t> component;
+  const std::uint32_t count = uf.label_sets(component);
   const Orientation orientation = orient_components(g, component, count);
 
   // Closed orientable pieces face outward: their signed volume (sum of det(a, b, c) / 6 over

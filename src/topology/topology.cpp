@@ -99,14 +99,8 @@ MeshTopology analyze_topology(const TriangleMesh& input, const TopologyOptions& 
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
       uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
-  std::vector<std::uint32_t> component(g.faces.size());
-  std::vector<std::uint32_t> root_to_component(g.faces.size(), UINT32_MAX);
-  std::uint32_t num_components = 0;
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
-    const std::uint32_t r = uf.find(f);
-    if (root_to_component[r] == UINT32_MAX) root_to_component[r] = num_components++;
-    component[f] = root_to_component[r];
-  }
+  std::vector<std::uint32_t> component;
+  const std::uint32_t num_components = uf.label_sets(component);
   out.components.resize(num_components);
   const Orientation orientation = orient_components(g, component, num_components);
 
