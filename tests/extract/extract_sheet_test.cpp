@@ -24,6 +24,17 @@ envelope::SurfaceSamples exact_samples(const surfaces::Surface& surface, std::si
   return fixtures::builtin_samples(surface.name(), n);
 }
 
+// The sheet's analysis against the exact tessellation and the samples' boundary curves.
+analysis::AnalysisReport analyze_against_truth(const TriangleMesh& mesh, const surfaces::Surface& surface,
+                                               const envelope::SurfaceSamples& samples) {
+  analysis::Reference reference;
+  reference.mesh = surfaces::tessellate(surface);
+  for (const auto& c : samples.boundary) reference.boundary.push_back(c.polyline());
+  analysis::AnalyzeOptions options;
+  options.distance.samples = 20000;
+  return analysis::analyze_mesh(mesh, reference, options);
+}
+
 }  // namespace
 
 class SheetOfBuiltin : public ::testing::TestWithParam<Case> {};
@@ -33,12 +44,7 @@ TEST_P(SheetOfBuiltin, has_the_surface_topology_and_stays_close) {
   const auto samples = exact_samples(*surface, GetParam().points);
   const auto env = envelope::sample_envelope(samples);
   const auto sheet = extract::extract_sheet(env, samples);
-  analysis::Reference reference;
-  reference.mesh = surfaces::tessellate(*surface);
-  for (const auto& c : samples.boundary) reference.boundary.push_back(c.polyline());
-  analysis::AnalyzeOptions ao;
-  ao.distance.samples = 20000;
-  const auto report = analysis::analyze_mesh(sheet.mesh, reference, ao);
+  const auto report = analyze_against_truth(sheet.mesh, *surface, samples);
   const auto expected = surface->expected_topology();
   const auto& t = report.topology;
   std::printf("%s: rho %.4f h %.4f env %zu | V %zu F %zu chi %ld loops %zu orient %d nm %zu/%zu | "
@@ -163,12 +169,7 @@ TEST_P(SheetOfNoisyBuiltin, issue_5_stays_within_half_a_percent_of_the_surface) 
   eo.seed = 3;
   const auto env = envelope::sample_envelope(samples, eo);
   const auto sheet = extract::extract_sheet(env, samples);
-  analysis::Reference reference;
-  reference.mesh = surfaces::tessellate(*surface);
-  for (const auto& c : samples.boundary) reference.boundary.push_back(c.polyline());
-  analysis::AnalyzeOptions ao;
-  ao.distance.samples = 20000;
-  const auto report = analysis::analyze_mesh(sheet.mesh, reference, ao);
+  const auto report = analyze_against_truth(sheet.mesh, *surface, samples);
   const auto& t = report.topology;
   const auto expected = surface->expected_topology();
   const double mesh_to_truth = report.distance->relative(report.distance->mesh_to_reference.max);
