@@ -36,7 +36,7 @@ struct Args {
   std::vector<std::size_t> sizes = {10000, 100000, 1000000};
   std::vector<std::string> surfaces = {"sphere", "torus"};
   double noise = 0.0;
-  double joggle = powercrust::PowerCrustOptions().pole_joggle_rel_radius;
+  double joggle = powercrust::PowerCrustOptions().pole_joggle;
   bool check = false;
   std::size_t parallel_from = powercrust::PowerCrustOptions().parallel_insertion_from;
 };
@@ -117,7 +117,7 @@ Measurement run_power_crust(const std::vector<Point3>& points, const Args& args)
   Measurement m;
   powercrust::PowerCrustOptions options;
   options.parallel_insertion_from = args.parallel_from;
-  options.pole_joggle_rel_radius = args.joggle;
+  options.pole_joggle = args.joggle;
   Progress progress;
   const char* stage_names[] = {"delaunay", "poles", "power_diagram", "labeling", "crust", "power_shape"};
   take_peak_mb();

@@ -41,8 +41,8 @@ CellKey key_of(RtCell c) {
 
 // The weighted circumcentre computed from the sites in id order, so its bits do not depend on
 // the cell's vertex order. The sites are rebuilt exactly as build_power_diagram inserted them.
-Point3 corner_point(const CellKey& key, const std::vector<Pole>& poles, double joggle) {
-  auto weighted = [&](Index id) { return power_site(poles[id], id, joggle); };
+Point3 corner_point(const CellKey& key, const std::vector<Pole>& poles, const PowerDiagram& diagram) {
+  auto weighted = [&](Index id) { return diagram.site(poles, id); };
   return power_vertex(weighted(key[0]), weighted(key[1]), weighted(key[2]), weighted(key[3]));
 }
 
@@ -202,7 +202,7 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
   chunks.clear();
   out.mesh.vertices.resize(keys.size());
   tbb::parallel_for(std::size_t{0}, keys.size(),
-                    [&](std::size_t i) { out.mesh.vertices[i] = corner_point(keys[i], poles, diagram.joggle); });
+                    [&](std::size_t i) { out.mesh.vertices[i] = corner_point(keys[i], poles, diagram); });
   keys = {};
 
   if (out.unbounded_faces > 0)

@@ -29,9 +29,9 @@ double check_unit_range(const char* field, double value) {
 }  // namespace
 
 Thresholds check_options(const PowerCrustOptions& options) {
-  if (!(options.pole_joggle_rel_radius >= 0.0 && options.pole_joggle_rel_radius <= 1e-2))
-    throw InvalidOptions("PowerCrustOptions.pole_joggle_rel_radius must be in [0, 1e-2] (got " +
-                         format_value(options.pole_joggle_rel_radius) + ")");
+  if (!(options.pole_joggle >= 0.0 && options.pole_joggle <= 1e-2))
+    throw InvalidOptions("PowerCrustOptions.pole_joggle must be in [0, 1e-2] (got " +
+                         format_value(options.pole_joggle) + ")");
   if (!(options.bounding_box_scale > 1.0) || !std::isfinite(options.bounding_box_scale))
     throw InvalidOptions("PowerCrustOptions.bounding_box_scale must be a finite number > 1 (got " +
                          format_value(options.bounding_box_scale) + ")");

@@ -84,7 +84,7 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   const CGAL::Bbox_3 sample_box = CGAL::bbox_3(result.samples.begin(), result.samples.end());
   const PowerDiagram diagram =
       build_power_diagram(result.poles, sample_box, parallel(result.poles.size()),
-                          options.pole_joggle_rel_radius);
+                          options.pole_joggle);
   stats.power_diagram_cells = diagram.rt->number_of_finite_cells();
   stats.seconds_power_diagram = clock.lap("power_diagram");
 
@@ -92,8 +92,8 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   {
     const PoleGraph graph = build_pole_graph(diagram, result.poles);
     const LabelingReport report =
-        label_poles(result.poles, result.sample_poles, graph, thresholds,
-                    sample_box, options.resolve_unknown);
+        label_poles(result.poles, result.sample_poles, graph, thresholds, sample_box,
+                    options.resolve_unknown);
     stats.unknown_poles = report.unknown_after_second_pass;
     stats.resolved_unknown_poles = report.resolved;
     if (report.unknown_after_second_pass > 0)

@@ -87,9 +87,9 @@ TEST(PowerCrustChecks, options_out_of_range_name_field_and_value) {
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
             "PowerCrustOptions.bounding_box_scale must be a finite number > 1 (got 0.5)");
   options = {};
-  options.pole_joggle_rel_radius = 0.05;
+  options.pole_joggle = 0.05;
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
-            "PowerCrustOptions.pole_joggle_rel_radius must be in [0, 1e-2] (got 0.05)");
+            "PowerCrustOptions.pole_joggle must be in [0, 1e-2] (got 0.05)");
   options = {};
   options.neighbor_threshold = 2.0;
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
