@@ -3,6 +3,8 @@
 // measurement runs in a forked child, so every peak RSS belongs to one run. Usage:
 //   envcrust_bench_powercrust [--sizes 10000,100000,1000000] [--surfaces sphere,torus]
 //                             [--noise 0.001] [--parallel-from 200000] [--check]
+#include "peak_memory.h"
+
 #include "envcrust/power_crust.h"
 #include "envcrust/surfaces.h"
 #include "envcrust/topology.h"
@@ -97,22 +99,6 @@ std::vector<Point3> sample(const std::string& name, std::size_t n, double noise)
   return surfaces::sample_surface(*surfaces::make_builtin(name), options).points;
 }
 
-// Peak resident set size since the last reset, in MB (Linux: VmHWM), then reset it.
-double take_peak_mb() {
-  double kb = 0;
-  if (FILE* f = std::fopen("/proc/self/status", "r")) {
-    char line[256];
-    while (std::fgets(line, sizeof line, f))
-      if (std::strncmp(line, "VmHWM:", 6) == 0) kb = std::atof(line + 6);
-    std::fclose(f);
-  }
-  if (FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
-    std::fputs("5", f);  // 5: reset the peak to the current RSS
-    std::fclose(f);
-  }
-  return kb / 1024.0;
-}
-
 Measurement run_power_crust(const std::vector<Point3>& points, const Args& args) {
   Measurement m;
   powercrust::PowerCrustOptions options;
@@ -120,11 +106,11 @@ Measurement run_power_crust(const std::vector<Point3>& points, const Args& args)
   options.pole_joggle = args.joggle;
   Progress progress;
   const char* stage_names[] = {"delaunay", "poles", "power_diagram", "labeling", "crust", "power_shape"};
-  take_peak_mb();
+  bench::take_peak_mb();
   progress.callback = [&](std::string_view stage, double fraction) {
     if (fraction < 1.0) return;
     for (int k = 0; k < 6; ++k)
-      if (stage == stage_names[k]) m.stage_peak_mb[k] = take_peak_mb();
+      if (stage == stage_names[k]) m.stage_peak_mb[k] = bench::take_peak_mb();
   };
   const auto t0 = std::chrono::steady_clock::now();
   const auto r = powercrust::power_crust(points, options, progress);

@@ -1,11 +1,13 @@
 // envcrust_bench_reconstruct: time of the envelope reconstruction of built-in surfaces, as a
 // ratio to a bare CGAL Delaunay triangulation of the same envelope samples (same run).
-//   envcrust_bench_reconstruct [--sizes 10000,100000] [--surfaces trefoil-ribbon,moebius]
+//   envcrust_bench_reconstruct [--sizes 10000,100000,1000000] [--surfaces trefoil-ribbon,moebius]
+// Peak MB: the largest resident size during the reconstruction (VmHWM, reset before it).
+#include "peak_memory.h"
+
 #include "envcrust/pipeline.h"
 #include "envcrust/surfaces.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -30,16 +32,10 @@ std::vector<std::string> split(const char* text) {
   return out;
 }
 
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> sizes = {"10000", "100000"};
+  std::vector<std::string> sizes = {"10000", "100000", "1000000"};
   std::vector<std::string> names = {"trefoil-ribbon", "moebius", "cylinder"};
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::strcmp(argv[i], "--sizes") == 0) sizes = split(argv[i + 1]);
@@ -56,16 +52,18 @@ int main(int argc, char** argv) {
       const PointSet ps = surfaces::sample_surface(*surface, o);
       envelope::SurfaceSamples samples{ps.points, ps.normals,
                                        surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface))};
+      bench::take_peak_mb();  // the peak below is the reconstruction's, sampling excluded
       auto t0 = std::chrono::steady_clock::now();
       const auto result = pipeline::reconstruct(samples);
       const double total = seconds_since(t0);
+      const double peak = bench::take_peak_mb();
       const auto points = result.envelope.points();
       t0 = std::chrono::steady_clock::now();
       CGAL::Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
       const double bare = seconds_since(t0);
       std::printf("| %s | %s | %zu | %.2f | %.2f | %.2f | %.2f | %.1f× | %.0f |\n", name.c_str(), size.c_str(),
                   points.size(), result.seconds.envelope, result.seconds.extraction, total, bare, total / bare,
-                  peak_rss_mb());
+                  peak);
       std::fflush(stdout);
     }
   }

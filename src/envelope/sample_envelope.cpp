@@ -51,6 +51,8 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 1, "spacing_rel_rho", o.spacing_rel_rho);
   check(o.sheet_clearance > 0 && o.sheet_clearance <= 1, "sheet_clearance", o.sheet_clearance);
   check(o.rim_clearance > 0 && o.rim_clearance <= 1, "rim_clearance", o.rim_clearance);
+  check(o.fold_warning_fraction > 0 && o.fold_warning_fraction <= 1, "fold_warning_fraction",
+        o.fold_warning_fraction);
   check(o.min_rho_rel_noise >= 0, "min_rho_rel_noise", o.min_rho_rel_noise);
   check(o.reach_quantile >= 0 && o.reach_quantile < 1, "reach_quantile", o.reach_quantile);
   check(o.reach_min_pair_rel_spacing >= 0, "reach_min_pair_rel_spacing", o.reach_min_pair_rel_spacing);
@@ -145,6 +147,8 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   NeighborSearch::Tree tree(reference.begin(), reference.end());
   tree.build();
   std::vector<char> keep(candidates.size(), 1);
+  std::vector<char> folds(candidates.size(), 0);
+  const double noise_allowance = 3.0 * out.noise;
   const bool is_adaptive = options.rho_mode == RhoMode::Adaptive;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -157,24 +161,27 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                                ? std::sqrt(CGAL::squared_distance(candidates[i].position, candidates[i].generator))
                                : out.rho;
       if (d < clearance * rho_i) keep[i] = 0;
+      folds[i] = candidates[i].part == EnvelopePart::Sheet && d < clearance * rho_i - noise_allowance;
     }
   });
-  std::size_t sheet_total = 0, sheet_dropped = 0;
+  std::size_t sheet_total = 0, sheet_folded = 0;
   std::vector<EnvelopeSample> kept_candidates;
   kept_candidates.reserve(candidates.size());
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (candidates[i].part == EnvelopePart::Sheet) {
       ++sheet_total;
-      if (!keep[i]) ++sheet_dropped;
+      sheet_folded += folds[i];
     }
     if (keep[i]) kept_candidates.push_back(candidates[i]);
   }
   out.dropped_too_close = candidates.size() - kept_candidates.size();
-  if (sheet_total > 0 && static_cast<double>(sheet_dropped) > 1e-3 * static_cast<double>(sheet_total)) {
-    out.warnings.push_back("rho " + format(out.rho) + " may be too large: " +
-                           std::to_string(sheet_dropped) + " of " + std::to_string(sheet_total) +
-                           " sheet candidates come closer than " + format(options.sheet_clearance) +
-                           " rho to the surface (the envelope folds onto itself)");
+  if (sheet_total > 0 &&
+      static_cast<double>(sheet_folded) > options.fold_warning_fraction * static_cast<double>(sheet_total)) {
+    out.warnings.push_back("rho " + format(out.rho) + " may be too large: " + std::to_string(sheet_folded) +
+                           " of " + std::to_string(sheet_total) + " sheet candidates come closer than " +
+                           format(options.sheet_clearance) + " rho" +
+                           (noise_allowance > 0 ? " - 3 noise" : std::string()) +
+                           " to the surface (the envelope folds onto itself)");
   }
 
   std::vector<Point3> positions;
