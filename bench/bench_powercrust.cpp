@@ -200,11 +200,10 @@ int main(int argc, char** argv) {
                   pc.seconds[7] / base.dt_sequential, pc.seconds[7] / base.dt_parallel, pc_mb,
                   pc_mb / (static_cast<double>(n) / 1e6), pc.poles, pc.hidden, topo);
       std::printf("        peak MB per stage: delaunay %.0f, poles %.0f, power diagram %.0f, labeling %.0f, "
-                  "crust %.0f, power shape %.0f\n",
+                  "crust %.0f, power shape %.0f; bare DTs %.0f\n",
                   pc.stage_peak_mb[0], pc.stage_peak_mb[1], pc.stage_peak_mb[2], pc.stage_peak_mb[3],
-                  pc.stage_peak_mb[4], pc.stage_peak_mb[5]);
+                  pc.stage_peak_mb[4], pc.stage_peak_mb[5], base_mb);
       std::fflush(stdout);
-      (void)base_mb;
     }
   }
   return 0;

@@ -6,9 +6,9 @@
 
 #include "envelope_candidates.h"
 #include "poisson_disk.h"
+#include "spacing.h"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/compute_average_spacing.h>
 #include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
@@ -65,8 +65,7 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
 // shorter than the automatic reach's minimum pair length count only when they cross to a
 // facing sheet (LocalReachOptions::crossing_min_cos).
 std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptions& o, double rho_max,
-                              double noise) {
-  const double spacing = CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(surface.points, 6);
+                              double noise, double spacing) {
   LocalReachOptions reach;
   reach.search_radius = 2.0 * rho_max / o.adaptive_rho_rel_lfs;
   reach.min_pair_distance = o.reach_min_pair_rel_spacing * spacing;
@@ -93,12 +92,12 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   EnvelopeSamples out;
   const double diag = mesh::bbox_diagonal(surface.points);
   out.noise = surface.points.size() >= 4 ? estimate_noise(surface.points) : 0.0;
+  const double average_spacing = strided_average_spacing(surface.points, 6);
   if (options.rho) {
     out.rho = *options.rho;
   } else {
     out.reach = estimate_reach(surface, ReachOptions{.quantile = options.reach_quantile,
-                     .min_pair_distance = options.reach_min_pair_rel_spacing *
-                                          CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(surface.points, 6),
+                     .min_pair_distance = options.reach_min_pair_rel_spacing * average_spacing,
                      .seed = options.seed});
     const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
     out.rho = options.rho_rel_reach * capped;
@@ -116,7 +115,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
 
   std::vector<double> rho(surface.points.size(), out.rho);
   if (options.rho_mode == RhoMode::Adaptive) {
-    out.local_rho = local_rho(surface, options, out.rho, out.noise);
+    out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing);
     rho = out.local_rho;
     out.rho_min = *std::min_element(rho.begin(), rho.end());
   }
