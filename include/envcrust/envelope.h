@@ -190,6 +190,9 @@ struct EnvelopeSamples {
   std::size_t candidates = 0;      ///< before thinning
   std::size_t dropped_too_close = 0;  ///< candidates nearer than the clearance to M
   double input_coverage = 0.0;     ///< largest gap of the input samples seen by the sheets
+  /// Per input sample, the distance to its 8th nearest other sample (r_k of the sheet
+  /// candidates; input_coverage is the largest). The extraction reuses it.
+  std::vector<double> input_neighbour_distance;
   /// Smallest rho whose envelope bridges the largest gap (input_coverage / 2.5); a smaller rho
   /// leaves holes, and a warning says which rho or which input spacing would work.
   double min_rho_for_gaps = 0.0;

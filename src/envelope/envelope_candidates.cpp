@@ -41,7 +41,7 @@ void add_pair(std::vector<EnvelopeSample>& out, const Point3& g, const Vector3& 
 
 std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std::vector<double>& rho,
                                              double spacing_rel_rho, double per_h2, std::uint64_t seed,
-                                             double& largest_gap) {
+                                             std::vector<double>& rk_of) {
   NeighborSearch::Tree tree(s.points.begin(), s.points.end());
   tree.build();
   // Generators spread over a tangent disk must stay on M: near a boundary curve, drop those
@@ -60,7 +60,7 @@ std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std:
     return (g - rim_points[b]) * rim_conormals[b] > 0.0;
   };
   // r_k per point (parallel), then the generators in input order (one random stream).
-  std::vector<double> rk_of(s.points.size());
+  rk_of.assign(s.points.size(), 0.0);
   const unsigned k = std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(s.points.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.points.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
@@ -73,14 +73,12 @@ std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std:
   std::mt19937_64 rng(seed);
   std::vector<EnvelopeSample> out;
   out.reserve(4 * s.points.size());
-  largest_gap = 0.0;
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     const Point3& p = s.points[i];
     const Vector3 n = unit(s.normals[i]);
     const double rk = rk_of[i];
     const double rk2 = rk * rk;
     const double h = spacing_rel_rho * rho[i];
-    largest_gap = std::max(largest_gap, rk);
     // Disks of radius r_k overlap about k times, so m generators per disk give a density of
     // about k m / (pi r_k^2); ask for per_h2 / h^2.
     const double wanted = per_h2 * std::numbers::pi * rk2 / (kNeighbors * h * h);

@@ -130,10 +130,11 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     for (const auto& c : surface.boundary) rim_rho.emplace_back(c.vertices.size(), out.rho);
   }
 
-  double largest_gap = 0.0;
-  std::vector<EnvelopeSample> candidates =
-      sheet_candidates(surface, rho, options.spacing_rel_rho, kCandidatesPerH2, options.seed, largest_gap);
-  out.input_coverage = largest_gap;
+  std::vector<EnvelopeSample> candidates = sheet_candidates(surface, rho, options.spacing_rel_rho, kCandidatesPerH2,
+                                                            options.seed, out.input_neighbour_distance);
+  out.input_coverage = out.input_neighbour_distance.empty()
+                           ? 0.0
+                           : *std::max_element(out.input_neighbour_distance.begin(), out.input_neighbour_distance.end());
   const auto rims = rim_candidates(surface.boundary, rim_rho, options.spacing_rel_rho, kRimStepRelH);
   candidates.insert(candidates.end(), rims.begin(), rims.end());
   out.candidates = candidates.size();
@@ -197,9 +198,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     for (std::size_t index : poisson_disk_thin(positions, out.spacing, options.seed))
       out.samples.push_back(kept_candidates[index]);
   }
-  out.min_rho_for_gaps = largest_gap / kGapsPerRho;
+  out.min_rho_for_gaps = out.input_coverage / kGapsPerRho;
   if (out.rho < out.min_rho_for_gaps) {
-    out.warnings.push_back("the input has gaps of " + format(largest_gap) + " (rho is " + format(out.rho) +
+    out.warnings.push_back("the input has gaps of " + format(out.input_coverage) + " (rho is " + format(out.rho) +
                            "): the envelope may have holes; rho >= " + format(out.min_rho_for_gaps) +
                            " or input with gaps below " + format(kGapsPerRho * out.rho) + " would work");
   }

@@ -9,7 +9,11 @@
 #include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <optional>
 #include <sstream>
 
 namespace envcrust::extract {
@@ -35,17 +39,23 @@ void validate(const SheetOptions& o) {
 
 // Per surface sample: how far a face of the sheet may lie from it, the larger of
 // max_face_distance_rel_rho times its rho and its distance to the 8th nearest sample (where
-// the input is sparse, the sheet spans gaps wider than rho).
+// the input is sparse, the sheet spans gaps wider than rho; the envelope measured it).
 std::vector<double> far_distances(const envelope::EnvelopeSamples& envelope, const envelope::SurfaceSamples& surface,
                                   const SheetOptions& options) {
   const auto& pts = surface.points;
   std::vector<double> out(pts.size());
-  const NearestIndex index(pts);
+  const auto& spacing = envelope.input_neighbour_distance;
+  const bool known = spacing.size() == pts.size();
+  std::optional<NearestIndex> index;
+  if (!known) index.emplace(pts);
   const auto k = static_cast<unsigned>(std::min<std::size_t>(pts.size(), 9));
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
-    out[i] = std::max(options.max_face_distance_rel_rho * rho, index.nearest(pts[i], k).back().second);
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
+      const double gap = known ? spacing[i] : index->nearest(pts[i], k).back().second;
+      out[i] = std::max(options.max_face_distance_rel_rho * rho, gap);
+    }
+  });
   return out;
 }
 
