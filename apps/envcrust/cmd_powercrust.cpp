@@ -113,8 +113,9 @@ void register_powercrust(CLI::App& app) {
   sub->add_option("--box-scale", cmd->options.bounding_box_scale,
                   "Half-width of the bounding cube in largest extents of the input")->capture_default_str();
   sub->add_option("--pole-joggle", cmd->options.pole_joggle,
-                  "Move each pole by up to this fraction of its local feature size (deterministic) before the power diagram, "
-                  "so exact samples (sphere, torus) do not put the poles in degenerate position; 0: off")
+                  "Move each pole by up to this fraction of the smaller of its radius and the input's box diagonal "
+                  "(deterministic) before the power diagram, so exact samples (sphere, torus) do not put the poles "
+                  "in degenerate position; 0: off")
       ->capture_default_str();
   sub->add_flag("--keep-unknown", cmd->keep_unknown,
                 "Leave poles the labeling could not decide unlabeled, as the original does (may open the crust)");
