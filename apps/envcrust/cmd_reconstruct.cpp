@@ -152,7 +152,10 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"non_manifold_faces_removed", s.non_manifold_faces_removed},
                   {"vertices_split", s.vertices_split}, {"holes_filled", s.holes_filled},
                   {"vertices_projected", s.vertices_projected},
-                  {"projections_refused", s.projections_refused}};
+                  {"projections_refused", s.projections_refused},
+                  {"vertices_welded", s.vertices_welded},
+                  {"final_defects_repaired", s.final_defects_repaired},
+                  {"faces_dropped_at_defects", s.faces_dropped_at_defects}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;

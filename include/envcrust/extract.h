@@ -67,6 +67,12 @@ struct SheetStats {
   std::size_t holes_filled = 0;
   std::size_t vertices_projected = 0;
   std::size_t projections_refused = 0;  ///< moves refused because a face would flip
+  /// The final manifold check (after projection; vertices at one position count as one, as
+  /// analyze_topology welds them): vertices merged, non-manifold edges plus pinched vertices
+  /// it found and repaired, and faces it dropped where the repair failed (with a warning).
+  std::size_t vertices_welded = 0;
+  std::size_t final_defects_repaired = 0;
+  std::size_t faces_dropped_at_defects = 0;
 };
 
 /// The extracted sheet.

@@ -123,6 +123,18 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.vertices_projected = moved.moved + snapped.moved;
     result.stats.projections_refused = moved.refused + snapped.refused;
   }
+  // Every step above can leave a defect that the next ones do not see (moves put vertices on
+  // one point, a fan over a loop through a pinched vertex), so the result is checked as the
+  // analyzer reads it, and repaired.
+  const ManifoldRepairStats repair = make_manifold(sheet);
+  result.stats.vertices_welded = repair.vertices_welded;
+  result.stats.final_defects_repaired = repair.non_manifold_edges_found + repair.non_manifold_vertices_found;
+  result.stats.faces_dropped_at_defects = repair.faces_dropped;
+  result.stats.non_manifold_faces_removed += repair.non_manifold_faces_removed;
+  result.stats.vertices_split += repair.vertices_split;
+  if (repair.faces_dropped > 0)
+    result.warnings.push_back(std::to_string(repair.faces_dropped) +
+                              " faces dropped at non-manifold edges or vertices that could not be repaired");
   result.mesh = std::move(sheet.mesh);
   // The Voronoi polygons come wound as their Delaunay edges happen to run.
   topology::orient_faces(result.mesh);

@@ -51,6 +51,28 @@ std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<
 /// the number of loops filled.
 std::size_t fill_short_loops(TaggedMesh& tagged, double max_length);
 
+/// What make_manifold found and did.
+struct ManifoldRepairStats {
+  std::size_t vertices_welded = 0;           ///< vertices merged into one at the same position
+  std::size_t degenerate_faces_removed = 0;  ///< repeated vertex or repeated face after welding
+  std::size_t non_manifold_edges_found = 0;  ///< after welding, before the repair
+  std::size_t non_manifold_vertices_found = 0;
+  std::size_t non_manifold_faces_removed = 0;  ///< by resolve_non_manifold_edges
+  std::size_t vertices_split = 0;              ///< by split_pinched_vertices
+  std::size_t faces_dropped = 0;  ///< at defects still left after `max_rounds` repairs
+  int rounds = 0;                 ///< repair rounds run
+};
+
+/// Make the mesh a 2-manifold as analyze_topology sees it, which welds vertices with
+/// identical coordinates: projection and snapping can move two vertices (the copies of a
+/// split vertex, two border vertices snapped to one curve point) onto one position, where
+/// they meet at a non-manifold edge or vertex. Welds, drops faces with a repeated vertex and
+/// repeated faces, then runs resolve_non_manifold_edges and split_pinched_vertices until no
+/// defect is left (at most `max_rounds` times); the faces at any defect left after that are
+/// dropped (counted in faces_dropped) until none is left. Unused vertices are dropped.
+/// Run it after every step that moves vertices or changes faces.
+ManifoldRepairStats make_manifold(TaggedMesh& tagged, int max_rounds = 4);
+
 /// Drop unused vertices (indices remapped).
 void compact_vertices(TaggedMesh& tagged);
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 
 namespace envcrust::extract {
 namespace {
@@ -358,16 +359,28 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
     if (CGAL::squared_distance(target.point, m.vertices[v]) > max_move * max_move) continue;
     pending.emplace_back(v, target);
   }
+  // The nearest-point map onto a polyline is not one-to-one: every point in the normal cone
+  // of a convex corner (a ragged scan rim has many) maps to the corner. Two vertices snapped
+  // onto one point would be one vertex to anyone who welds the output (a pinched vertex), so
+  // a point already taken is refused and the vertex takes the normal-only move below.
+  std::set<std::array<double, 3>> taken;
+  auto key = [](const Point3& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
   for (unsigned round = 0; round <= retry_rounds && !pending.empty(); ++round) {
     std::vector<std::pair<Index, CurvePoint>> again;
     bool progress = false;
     for (const auto& [v, target] : pending) {
+      if (taken.count(key(target.point)) > 0 && m.vertices[v] != target.point) {
+        again.emplace_back(v, target);
+        continue;
+      }
       const Vector3 axis = boundary.normals[index.nearest(target.point).first];
       progress |= move_if_safe(m, faces_of, v, target.point, axis);
-      if (m.vertices[v] == target.point)
+      if (m.vertices[v] == target.point) {
         snap[v] = target;
-      else
+        taken.insert(key(target.point));
+      } else {
         again.emplace_back(v, target);
+      }
     }
     if (!progress) break;
     pending.swap(again);

@@ -1,0 +1,137 @@
+// The sheet's last cleaning step: make the mesh a 2-manifold as the analyzer sees it (vertices
+// welded by position), or drop the faces where it cannot (METHOD.md §5 c1 step 4).
+#include "sheet_mesh.h"
+
+#include "envcrust/mesh.h"
+#include "envcrust/mesh_graph.h"
+
+#include <algorithm>
+#include <map>
+
+namespace envcrust::extract {
+namespace {
+
+// Weld vertices with identical coordinates, keeping the tags; faces with a repeated vertex
+// after welding, or the vertex set of an earlier face, are dropped. Returns {vertices merged, faces dropped}.
+std::pair<std::size_t, std::size_t> weld_and_drop_degenerate(TaggedMesh& t) {
+  const std::size_t used_before = [&] {
+    std::vector<char> used(t.mesh.vertices.size(), 0);
+    for (const auto& f : t.mesh.triangles)
+      for (Index v : f) used[v] = 1;
+    return static_cast<std::size_t>(std::count(used.begin(), used.end(), 1));
+  }();
+  TriangleMesh welded = mesh::weld_identical_vertices(t.mesh);
+  const std::size_t merged = used_before - welded.vertices.size();
+  std::vector<char> is_repeat(welded.triangles.size(), 0);
+  {  // faces with the vertex set of an earlier face (a two-face pillow where copies met)
+    std::vector<std::pair<std::array<Index, 3>, std::size_t>> keys;
+    keys.reserve(welded.triangles.size());
+    for (std::size_t f = 0; f < welded.triangles.size(); ++f) {
+      auto k = welded.triangles[f];
+      std::sort(k.begin(), k.end());
+      keys.emplace_back(k, f);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 1; i < keys.size(); ++i)
+      if (keys[i].first == keys[i - 1].first) is_repeat[keys[i].second] = 1;
+  }
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < welded.triangles.size(); ++f) {
+    const auto& tri = welded.triangles[f];
+    if (is_repeat[f] || tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+    welded.triangles[kept] = tri;
+    t.face_dot[kept] = t.face_dot[f];
+    ++kept;
+  }
+  const std::size_t dropped = welded.triangles.size() - kept;
+  welded.triangles.resize(kept);
+  t.face_dot.resize(kept);
+  t.mesh = std::move(welded);
+  return {merged, dropped};
+}
+
+// Non-manifold edges (three or more faces) and pinched vertices (several fans).
+struct Defects {
+  std::size_t edges = 0;
+  std::size_t vertices = 0;
+  [[nodiscard]] bool empty() const { return edges == 0 && vertices == 0; }
+};
+
+// The defects of the mesh, and (when `faces` is given) the faces at them: every face of a
+// non-manifold edge, and at a pinched vertex every face outside its largest fan.
+Defects find_defects(const TriangleMesh& m, std::vector<char>* faces = nullptr) {
+  Defects out;
+  if (faces != nullptr) faces->assign(m.triangles.size(), 0);
+  if (m.triangles.empty()) return out;
+  const auto g = topology::build_mesh_graph(m.triangles, m.vertices.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    if (g.face_count_of_edge(e) < 3) continue;
+    ++out.edges;
+    if (faces != nullptr)
+      for (std::uint32_t i = g.edge_face_begin[e]; i < g.edge_face_begin[e + 1]; ++i) (*faces)[g.edge_faces[i]] = 1;
+  }
+  if (faces == nullptr) {
+    for (auto count : topology::count_vertex_fans(g)) out.vertices += count > 1 ? 1 : 0;
+    return out;
+  }
+  const auto fan = topology::corner_fans(g);
+  std::vector<std::map<std::uint32_t, std::vector<std::uint32_t>>> fans(g.num_vertices);
+  for (std::uint32_t f = 0; f < g.faces.size(); ++f)
+    for (std::uint32_t k = 0; k < 3; ++k) fans[g.faces[f][k]][fan[3 * f + k]].push_back(f);
+  for (const auto& of_vertex : fans) {
+    if (of_vertex.size() < 2) continue;
+    ++out.vertices;
+    const std::vector<std::uint32_t>* largest = nullptr;
+    for (const auto& [root, list] : of_vertex)
+      if (largest == nullptr || list.size() > largest->size()) largest = &list;
+    for (const auto& [root, list] : of_vertex)
+      if (&list != largest)
+        for (auto f : list) (*faces)[f] = 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+ManifoldRepairStats make_manifold(TaggedMesh& t, int max_rounds) {
+  ManifoldRepairStats stats;
+  auto weld = [&] {
+    const auto [merged, degenerate] = weld_and_drop_degenerate(t);
+    stats.vertices_welded += merged;
+    stats.degenerate_faces_removed += degenerate;
+  };
+  weld();
+  Defects defects = find_defects(t.mesh);
+  if (defects.empty()) return stats;  // vertex order kept
+  stats.non_manifold_edges_found = defects.edges;
+  stats.non_manifold_vertices_found = defects.vertices;
+  for (int round = 0; round < max_rounds && !defects.empty(); ++round) {
+    ++stats.rounds;
+    stats.non_manifold_faces_removed += resolve_non_manifold_edges(t);
+    stats.vertices_split += split_pinched_vertices(t);
+    weld();
+    defects = find_defects(t.mesh);
+  }
+  // What the rounds could not repair goes: the faces at the remaining defects, until none is
+  // left (each pass removes at least one face, so this ends).
+  std::vector<char> remove;
+  while (!find_defects(t.mesh, &remove).empty()) {
+    std::size_t kept = 0;
+    for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
+      if (remove[f]) {
+        ++stats.faces_dropped;
+        continue;
+      }
+      t.mesh.triangles[kept] = t.mesh.triangles[f];
+      t.face_dot[kept] = t.face_dot[f];
+      ++kept;
+    }
+    t.mesh.triangles.resize(kept);
+    t.face_dot.resize(kept);
+    weld();
+  }
+  compact_vertices(t);
+  return stats;
+}
+
+}  // namespace envcrust::extract
