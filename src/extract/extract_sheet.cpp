@@ -27,6 +27,8 @@ void validate(const SheetOptions& o) {
   };
   if (!(o.min_angle_deg > 90 && o.min_angle_deg < 180)) fail("min_angle_deg", o.min_angle_deg);
   if (!(o.max_component_distance_rel_rho > 0)) fail("max_component_distance_rel_rho", o.max_component_distance_rel_rho);
+  if (!(o.max_component_distance_rel_spacing >= 0))
+    fail("max_component_distance_rel_spacing", o.max_component_distance_rel_spacing);
   if (!(o.min_component_area_fraction >= 0 && o.min_component_area_fraction < 1))
     fail("min_component_area_fraction", o.min_component_area_fraction);
   if (!(o.projection_neighbors >= 1)) fail("projection_neighbors", o.projection_neighbors);
@@ -59,6 +61,27 @@ std::vector<double> far_distances(const envelope::EnvelopeSamples& envelope, con
   return out;
 }
 
+// Per surface sample: how far the median vertex of a kept component may lie from it, the
+// larger of max_component_distance_rel_rho times its rho and max_component_distance_rel_spacing
+// times its distance to the nearest other sample (a point of M lies about that far from the
+// nearest sample, whatever rho), at most rho.
+std::vector<double> component_distances(const envelope::EnvelopeSamples& envelope,
+                                        const envelope::SurfaceSamples& surface, const SheetOptions& options) {
+  const auto& pts = surface.points;
+  std::vector<double> out(pts.size());
+  std::optional<NearestIndex> index;
+  if (options.max_component_distance_rel_spacing > 0 && pts.size() > 1) index.emplace(pts);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
+      const double spacing = index ? index->nearest(pts[i], 2).back().second : 0.0;
+      out[i] = std::max(options.max_component_distance_rel_rho * rho,
+                        std::min(options.max_component_distance_rel_spacing * spacing, rho));
+    }
+  });
+  return out;
+}
+
 }  // namespace
 
 SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
@@ -73,11 +96,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   TaggedMesh sheet = triangulate_sheet(raw);
   // Distances that scale with rho use the local rho of the nearest sample (adaptive rho),
   // hole filling the smallest rho (a hole of 2 pi rho_min is below resolution everywhere).
-  std::vector<double> max_distance(surface.points.size(),
-                                   options.max_component_distance_rel_rho * envelope.rho);
-  if (envelope.local_rho.size() == surface.points.size())
-    for (std::size_t i = 0; i < max_distance.size(); ++i)
-      max_distance[i] = options.max_component_distance_rel_rho * envelope.local_rho[i];
+  const std::vector<double> max_distance = component_distances(envelope, surface, options);
   const double fill_rho = envelope.local_rho.empty() ? envelope.rho : envelope.rho_min;
   if (options.max_face_distance_rel_rho > 0)
     result.stats.far_faces_removed = drop_far_faces(sheet, surface.points, far_distances(envelope, surface, options));

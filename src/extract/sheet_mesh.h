@@ -29,7 +29,7 @@ std::size_t resolve_non_manifold_edges(TaggedMesh& tagged);
 std::size_t split_pinched_vertices(TaggedMesh& tagged);
 
 /// Keep the components whose median over vertices of d(v, s) / max_distance[s], s the nearest
-/// of `surface_points` (one max_distance per point: the local rho scales it), is below 1 and
+/// of `surface_points` (one max_distance per point: local rho and spacing set it), is below 1 and
 /// whose area is at least `min_area_fraction` of the total. Returns the number dropped.
 std::size_t filter_components(TaggedMesh& tagged, const std::vector<Point3>& surface_points,
                               const std::vector<double>& max_distance, double min_area_fraction);
