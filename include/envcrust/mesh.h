@@ -21,6 +21,10 @@ TriangleMesh triangulate_polygons(const PolygonMesh& mesh);
 /// triangle uses. Triangle indices are remapped; triangle order is kept.
 TriangleMesh weld_identical_vertices(const TriangleMesh& mesh);
 
+/// Per face, 1 when it has a repeated vertex index or the same vertex set as an earlier face
+/// (whatever the winding): what remove_duplicate_faces drops.
+std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh);
+
 /// Drop faces with a repeated vertex index and faces with the same vertex set as an earlier
 /// face (whatever their winding): scans often repeat triangles, which makes their edges look
 /// shared by more than two faces. Returns the number of faces dropped; order is kept.

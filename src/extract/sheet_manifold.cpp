@@ -22,24 +22,11 @@ std::pair<std::size_t, std::size_t> weld_and_drop_degenerate(TaggedMesh& t) {
   }();
   TriangleMesh welded = mesh::weld_identical_vertices(t.mesh);
   const std::size_t merged = used_before - welded.vertices.size();
-  std::vector<char> is_repeat(welded.triangles.size(), 0);
-  {  // faces with the vertex set of an earlier face (a two-face pillow where copies met)
-    std::vector<std::pair<std::array<Index, 3>, std::size_t>> keys;
-    keys.reserve(welded.triangles.size());
-    for (std::size_t f = 0; f < welded.triangles.size(); ++f) {
-      auto k = welded.triangles[f];
-      std::sort(k.begin(), k.end());
-      keys.emplace_back(k, f);
-    }
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 1; i < keys.size(); ++i)
-      if (keys[i].first == keys[i - 1].first) is_repeat[keys[i].second] = 1;
-  }
+  const std::vector<char> drop = mesh::repeated_or_degenerate_faces(welded);
   std::size_t kept = 0;
   for (std::size_t f = 0; f < welded.triangles.size(); ++f) {
-    const auto& tri = welded.triangles[f];
-    if (is_repeat[f] || tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-    welded.triangles[kept] = tri;
+    if (drop[f]) continue;
+    welded.triangles[kept] = welded.triangles[f];
     t.face_dot[kept] = t.face_dot[f];
     ++kept;
   }

@@ -47,7 +47,7 @@ TriangleMesh weld_identical_vertices(const TriangleMesh& mesh) {
   return out;
 }
 
-std::size_t remove_duplicate_faces(TriangleMesh& mesh) {
+std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh) {
   std::vector<std::pair<std::array<Index, 3>, std::size_t>> keys;
   keys.reserve(mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -56,14 +56,19 @@ std::size_t remove_duplicate_faces(TriangleMesh& mesh) {
     keys.emplace_back(key, f);
   }
   std::sort(keys.begin(), keys.end());
-  std::vector<bool> keep(mesh.triangles.size(), true);
+  std::vector<char> drop(mesh.triangles.size(), 0);
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const auto& [key, f] = keys[k];
-    if (key[0] == key[1] || key[1] == key[2] || (k > 0 && keys[k - 1].first == key)) keep[f] = false;
+    if (key[0] == key[1] || key[1] == key[2] || (k > 0 && keys[k - 1].first == key)) drop[f] = 1;
   }
+  return drop;
+}
+
+std::size_t remove_duplicate_faces(TriangleMesh& mesh) {
+  const std::vector<char> drop = repeated_or_degenerate_faces(mesh);
   std::size_t kept = 0;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    if (keep[f]) mesh.triangles[kept++] = mesh.triangles[f];
+    if (!drop[f]) mesh.triangles[kept++] = mesh.triangles[f];
   const std::size_t dropped = mesh.triangles.size() - kept;
   mesh.triangles.resize(kept);
   return dropped;
