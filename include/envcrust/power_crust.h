@@ -56,7 +56,7 @@ struct PowerCrustOptions {
   /// diagram's, so the crust moves by about as much). 0 turns it off. Range [0, 1e-2]. Exact
   /// samples put whole families of poles in degenerate position: a sphere's inner poles all at
   /// its centre (the regular triangulation falls back to exact arithmetic: 17 s instead of
-  /// 1.3 s at 300k samples), a torus's on its core circle and the hole's outer poles on its
+  /// 1.6 s at 300k samples), a torus's on its core circle and the hole's outer poles on its
   /// axis, where every axis pole's power cell touches every core pole's (exact torus, 100k
   /// samples: 411 s and 14.5 GB without it, 21 s and 0.4 GB with 1e-4). Poles the offsets
   /// hide take the label of the pole that hides them.
