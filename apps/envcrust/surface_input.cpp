@@ -1,6 +1,7 @@
 // Loading samples of M from a built-in surface, a point file or a mesh file.
 #include "surface_input.h"
 
+#include "cli_common.h"
 #include "inputs.h"
 
 #include "envcrust/errors.h"
@@ -57,6 +58,8 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling) {
   LoadedSurface out;
+  if (!sampling.boundary_file.empty() && is_builtin_spec(spec))
+    throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
   if (is_builtin_spec(spec)) {
     const auto surface = surfaces::make_builtin(spec.substr(std::string("builtin:").size()));
     surfaces::SampleOptions o;
@@ -83,6 +86,8 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     }
   }
   if (mesh) {
+    if (!sampling.boundary_file.empty())
+      throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
     load_mesh_samples(std::move(*mesh), spec, out);
     return out;
   }
@@ -98,7 +103,19 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   }
   out.samples.points = std::move(points.points);
   out.samples.normals = std::move(points.normals);
-  if (sampling.detect_boundary) {
+  if (!sampling.boundary_file.empty()) {
+    const PointSet given = io::read_points(sampling.boundary_file);
+    boundary::BoundaryDetection curves;
+    try {
+      curves = boundary::boundary_from_points(out.samples.points, out.samples.normals, given, sampling.boundary);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(sampling.boundary_file + ": " + e.what());
+    }
+    out.notes.push_back("boundary given: " + std::to_string(curves.curves.size()) + " curves from " +
+                        std::to_string(given.size()) + " points of " + sampling.boundary_file);
+    out.samples.boundary = std::move(curves.curves);
+    for (auto& w : curves.warnings) out.notes.push_back(std::move(w));
+  } else if (sampling.detect_boundary) {
     auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, sampling.boundary);
     out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                         std::to_string(detection.dropped_loops) + " short loops dropped)");

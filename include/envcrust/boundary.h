@@ -100,6 +100,23 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points,
                                   const std::vector<Vector3>& normal_lines,
                                   const BoundaryOptions& options = {});
 
+/// Boundary curves through boundary points the user gives instead of detecting them (a loop
+/// picked in a viewer, the vertices of a known cut, or a `--boundary-out` file edited by hand).
+/// Each given point marks its nearest sample, which must lie within `link_distance` spacings;
+/// the marked samples are linked, ordered, smoothed and framed as detected ones are. Their
+/// outward conormal comes from `given.normals` when present (made tangent to the sample's
+/// normal line), else from the direction away from the centroid of the `neighbors` nearest
+/// samples. Links reach at least twice the median distance between given points, so a loop
+/// may be given sparsely. No loop is dropped for being short or narrow: a group that orders
+/// into fewer than 3 curve points is dropped with a warning.
+/// @throws InvalidOptions as detect_boundary; InvalidInput if `given` is empty, has a
+/// non-finite coordinate, a conormal list of the wrong size, or a point farther than
+/// `link_distance` spacings from every sample ("boundary point 12 at (1, 2, 3) is 8.1
+/// spacings from the nearest sample").
+BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
+                                       const std::vector<Vector3>& normal_lines, const PointSet& given,
+                                       const BoundaryOptions& options = {});
+
 /// The boundary loops of a triangle mesh (edges with exactly one face), in the order of their
 /// first edge in the face list. Per vertex: t along the loop, n = the vertex normal line made
 /// perpendicular to t (signs propagated continuously along the loop), c = +-t x n pointing away

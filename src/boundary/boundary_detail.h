@@ -78,6 +78,24 @@ Centreline order_component(const std::vector<Point3>& points,
                            const std::vector<std::size_t>& component, double link_radius,
                            double bin_width);
 
+/// The NN-crust of points along curves (Dey & Kumar): each point is joined to its nearest
+/// neighbour and to the nearest point on the other side of it (b with (b - a).(nearest - a)
+/// < 0); then, longest first, joins between two points that both have more than two are
+/// dropped (sharp corners). Reconstructs curves sampled unevenly, within a third of their
+/// local feature size. Adjacency lists (curve_linking.cpp).
+std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& points);
+
+/// Curves through the flagged points of a given boundary: components of their NN-crust, each
+/// with its centreline: a component whose every point has two joins is walked as a cycle
+/// (points kept as given), another is ordered by order_component with links as long as its
+/// longest join (curve_linking.cpp).
+struct GivenCurves {
+  std::vector<std::vector<std::size_t>> components;  ///< flagged point ids, sorted
+  std::vector<Centreline> centrelines;
+};
+GivenCurves order_given_points(const std::vector<Point3>& points, const Candidates& candidates,
+                               double bin_width);
+
 /// Closed polyline resampled at equal arc length with ceil(L / spacing) vertices
 /// (curve_frames.cpp).
 Polyline resample_closed(const Polyline& curve, double spacing);

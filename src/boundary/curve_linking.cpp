@@ -88,6 +88,103 @@ std::vector<std::vector<std::size_t>> link_candidates(const std::vector<Point3>&
   return components;
 }
 
+std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& points) {
+  const std::size_t n = points.size();
+  std::vector<std::vector<std::size_t>> adj(n);
+  if (n < 2) return adj;
+  const PointIndex index(points);
+  auto join = [&adj](std::size_t a, std::size_t b) {
+    if (std::find(adj[a].begin(), adj[a].end(), b) == adj[a].end()) {
+      adj[a].push_back(b);
+      adj[b].push_back(a);
+    }
+  };
+  for (std::size_t a = 0; a < n; ++a) {
+    // Grow the query until a point on the far side of the nearest one turns up.
+    for (std::size_t k = std::min<std::size_t>(16, n);; k = std::min(2 * k, n)) {
+      const auto near = index.nearest(points[a], k);
+      std::size_t nearest = n, other = n;
+      for (const std::size_t b : near) {
+        if (b == a || points[b] == points[a]) continue;
+        if (nearest == n) {
+          nearest = b;
+        } else if (dot(points[b] - points[a], points[nearest] - points[a]) < 0) {
+          other = b;
+          break;
+        }
+      }
+      if (nearest != n) join(a, nearest);
+      if (other != n) join(a, other);
+      if (other != n || k == n) break;
+    }
+  }
+  // At a sharp corner the far-side neighbour can lie on another curve: drop joins between two
+  // points that both have more than two, longest first.
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  for (std::size_t a = 0; a < n; ++a)
+    for (const std::size_t b : adj[a])
+      if (a < b) edges.emplace_back(a, b);
+  auto length_of = [&points](const std::pair<std::size_t, std::size_t>& e) {
+    return CGAL::squared_distance(points[e.first], points[e.second]);
+  };
+  std::stable_sort(edges.begin(), edges.end(),
+                   [&](const auto& x, const auto& y) { return length_of(x) > length_of(y); });
+  for (const auto& [a, b] : edges) {
+    if (adj[a].size() > 2 && adj[b].size() > 2) {
+      adj[a].erase(std::find(adj[a].begin(), adj[a].end(), b));
+      adj[b].erase(std::find(adj[b].begin(), adj[b].end(), a));
+    }
+  }
+  return adj;
+}
+
+GivenCurves order_given_points(const std::vector<Point3>& points, const Candidates& candidates,
+                               double bin_width) {
+  const auto [ids, marked] = flagged_subset(points, candidates);
+  const auto adj = nn_crust_edges(marked);
+  GivenCurves out;
+  std::vector<char> seen(ids.size(), 0);
+  for (std::size_t start = 0; start < ids.size(); ++start) {
+    if (seen[start]) continue;
+    std::vector<std::size_t> members{start};
+    seen[start] = 1;
+    for (std::size_t m = 0; m < members.size(); ++m)
+      for (const std::size_t b : adj[members[m]])
+        if (!seen[b]) {
+          seen[b] = 1;
+          members.push_back(b);
+        }
+    std::vector<std::size_t> component;
+    double longest = 0.0;
+    bool is_cycle = members.size() >= 3;
+    for (const std::size_t a : members) {
+      component.push_back(ids[a]);
+      is_cycle = is_cycle && adj[a].size() == 2;
+      for (const std::size_t b : adj[a]) longest = std::max(longest, std::sqrt(CGAL::squared_distance(marked[a], marked[b])));
+    }
+    Centreline line;
+    if (is_cycle) {  // walk it
+      std::size_t previous = adj[start][1], at = start;
+      do {
+        line.points.push_back(marked[at]);
+        const std::size_t next = adj[at][0] == previous ? adj[at][1] : adj[at][0];
+        previous = at;
+        at = next;
+      } while (at != start && line.points.size() <= members.size());
+      line.length = closed_length(line.points);
+      line.open_length = line.length - std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
+      line.end_gap = std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
+    } else {
+      std::sort(component.begin(), component.end());
+      line = order_component(points, component, 1.01 * longest, bin_width);
+    }
+    std::sort(component.begin(), component.end());
+    out.components.push_back(std::move(component));
+    out.centrelines.push_back(std::move(line));
+  }
+  return out;
+}
+
 Centreline order_component(const std::vector<Point3>& points,
                            const std::vector<std::size_t>& component, double link_radius,
                            double bin_width) {

@@ -109,52 +109,47 @@ double local_spacing(const std::vector<Point3>& points, const detail::PointIndex
   return *mid;
 }
 
-}  // namespace
 
-BoundaryDetection detect_boundary(const std::vector<Point3>& points,
-                                  const std::vector<Vector3>& normal_lines,
-                                  const BoundaryOptions& options) {
-  validate(options);
-  const std::vector<Vector3> normals = unit_normals(points, normal_lines);
-  if (points.size() < static_cast<std::size_t>(options.neighbors) + 1) {
-    throw DegenerateInput("boundary detection needs at least neighbors + 1 = " +
-                          std::to_string(options.neighbors + 1) + " points (got " +
-                          std::to_string(points.size()) + ")");
-  }
-  BoundaryDetection out;
-  out.spacing = normals::average_spacing(points, 6);
+// Turns each component of flagged candidates, with its ordered centreline, into a closed,
+// framed curve (resampled, smoothed); fills `out` (curves, flags, conormals, warnings). With
+// `drop_small`, components shorter than min_loop_length or narrower than min_loop_width are
+// dropped and counted; without it only those that order into fewer than 3 points are, with a
+// warning.
+void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>& normals,
+                  const detail::PointIndex& index, const detail::Candidates& candidates,
+                  const BoundaryOptions& options, const std::vector<std::vector<std::size_t>>& components,
+                  const std::vector<detail::Centreline>& lines, bool drop_small, BoundaryDetection& out) {
   const double s = out.spacing;
   const double output_spacing = options.curve_spacing.value_or(s);
-  const detail::PointIndex index(points);
-
-  detail::Candidates candidates = detail::angle_gap_candidates(points, normals, index, options);
-  detail::keep_connected_to_strong(points, candidates, options.link_distance * s,
-                                   options.link_min_conormal_dot);
-  if (options.require_two_sided_support) {
-    detail::filter_two_sided_support(points, normals, candidates, options.support_radius * s,
-                                     options.link_min_conormal_dot);
-  }
-  const auto components = detail::link_candidates(points, candidates, options.link_distance * s,
-                                                  options.link_min_conormal_dot);
   out.is_boundary_point.assign(points.size(), false);
   out.conormals.assign(points.size(), Vector3(0, 0, 0));
-  for (const auto& component : components) {
-    const detail::Centreline line =
-        detail::order_component(points, component, options.link_distance * s, s);
-    if (line.points.size() < 3 || line.open_length < options.min_loop_length * s) {
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const auto& component = components[c];
+    const detail::Centreline& line = lines[c];
+    if (line.points.size() < 3) {
+      ++out.dropped_loops;
+      if (!drop_small) {
+        const Point3& p = points[component.front()];
+        out.warnings.push_back("a group of " + std::to_string(component.size()) + " boundary points near (" +
+                               format_number(p.x()) + ", " + format_number(p.y()) + ", " +
+                               format_number(p.z()) + ") makes no loop; ignored");
+      }
+      continue;
+    }
+    if (drop_small && line.open_length < options.min_loop_length * s) {
       ++out.dropped_loops;
       continue;
     }
     Polyline curve = detail::resample_closed(line.points, s);
     curve = detail::smooth_closed(curve, options.smoothing_half_window);
     curve = detail::resample_closed(curve, output_spacing);
-    if (options.min_loop_width > 0 &&
+    if (drop_small && options.min_loop_width > 0 &&
         loop_width(curve) < options.min_loop_width * local_spacing(points, index, component)) {
       ++out.dropped_loops;
       continue;
     }
     const std::size_t id = out.curves.size();
-    if (line.end_gap > options.close_distance * s) {
+    if (line.end_gap > std::max(options.close_distance * s, 0.0)) {
       out.warnings.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
                              format_number(line.end_gap / s) +
                              " spacings apart; closed across the gap");
@@ -172,6 +167,99 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points,
       out.conormals[i] = candidates.conormals[i];
     }
   }
+}
+
+// Unit outward conormal of a boundary sample: away from the centroid of its neighbours, in
+// the plane perpendicular to its normal line n.
+Vector3 centroid_conormal(const std::vector<Point3>& points, const Vector3& n,
+                          const std::vector<std::size_t>& neighbors, std::size_t self) {
+  Vector3 sum(0, 0, 0);
+  for (const std::size_t j : neighbors)
+    if (j != self) sum = sum + (points[j] - points[self]);
+  return detail::unit_perpendicular(-sum, n);
+}
+
+// Checked options and unit normals of a cloud with enough points for the neighbour queries.
+std::vector<Vector3> checked_normals(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
+                                     const BoundaryOptions& options) {
+  validate(options);
+  std::vector<Vector3> normals = unit_normals(points, normal_lines);
+  if (points.size() < static_cast<std::size_t>(options.neighbors) + 1) {
+    throw DegenerateInput("boundary detection needs at least neighbors + 1 = " +
+                          std::to_string(options.neighbors + 1) + " points (got " +
+                          std::to_string(points.size()) + ")");
+  }
+  return normals;
+}
+
+}  // namespace
+
+BoundaryDetection detect_boundary(const std::vector<Point3>& points,
+                                  const std::vector<Vector3>& normal_lines,
+                                  const BoundaryOptions& options) {
+  const std::vector<Vector3> normals = checked_normals(points, normal_lines, options);
+  BoundaryDetection out;
+  out.spacing = normals::average_spacing(points, 6);
+  const double s = out.spacing;
+  const detail::PointIndex index(points);
+
+  detail::Candidates candidates = detail::angle_gap_candidates(points, normals, index, options);
+  detail::keep_connected_to_strong(points, candidates, options.link_distance * s,
+                                   options.link_min_conormal_dot);
+  if (options.require_two_sided_support) {
+    detail::filter_two_sided_support(points, normals, candidates, options.support_radius * s,
+                                     options.link_min_conormal_dot);
+  }
+  const double link_radius = options.link_distance * s;
+  const auto components =
+      detail::link_candidates(points, candidates, link_radius, options.link_min_conormal_dot);
+  std::vector<detail::Centreline> lines;
+  for (const auto& component : components) lines.push_back(detail::order_component(points, component, link_radius, s));
+  build_curves(points, normals, index, candidates, options, components, lines, true, out);
+  return out;
+}
+
+BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
+                                       const std::vector<Vector3>& normal_lines, const PointSet& given,
+                                       const BoundaryOptions& options) {
+  const std::vector<Vector3> normals = checked_normals(points, normal_lines, options);
+  if (given.points.empty()) throw InvalidInput("no boundary points given");
+  if (given.has_normals() && given.normals.size() != given.points.size()) {
+    throw InvalidInput(std::to_string(given.normals.size()) + " boundary conormals for " +
+                       std::to_string(given.points.size()) + " boundary points");
+  }
+  BoundaryDetection out;
+  out.spacing = normals::average_spacing(points, 6);
+  const double s = out.spacing;
+  const detail::PointIndex index(points);
+  const auto k = static_cast<std::size_t>(options.neighbors) + 1;
+  detail::Candidates candidates;
+  candidates.flagged.assign(points.size(), 0);
+  candidates.strong.assign(points.size(), 0);
+  candidates.conormals.assign(points.size(), Vector3(0, 0, 0));
+  for (std::size_t g = 0; g < given.points.size(); ++g) {
+    const Point3& q = given.points[g];
+    if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z())) {
+      throw InvalidInput("boundary point " + std::to_string(g) + " has a non-finite coordinate");
+    }
+    const std::size_t i = index.nearest(q, 1).front();
+    const double d = detail::length(points[i] - q);
+    if (d > options.link_distance * s) {
+      throw InvalidInput("boundary point " + std::to_string(g) + " at (" + format_number(q.x()) + ", " +
+                         format_number(q.y()) + ", " + format_number(q.z()) + ") is " +
+                         format_number(d / s) + " spacings from the nearest sample (at most " +
+                         format_number(options.link_distance) + ")");
+    }
+    Vector3 c = given.has_normals() ? detail::unit_perpendicular(given.normals[g], normals[i]) : Vector3(0, 0, 0);
+    if (c == Vector3(0, 0, 0)) c = centroid_conormal(points, normals[i], index.nearest(points[i], k), i);
+    if (c == Vector3(0, 0, 0)) continue;  // no direction away from the neighbours: not a boundary
+    if (!candidates.flagged[i]) candidates.conormals[i] = c;
+    candidates.flagged[i] = candidates.strong[i] = 1;
+  }
+  // Given points may be spaced unevenly: the NN-crust joins each to its curve neighbours.
+  const detail::GivenCurves given_curves = detail::order_given_points(points, candidates, s);
+  build_curves(points, normals, index, candidates, options, given_curves.components, given_curves.centrelines,
+               false, out);
   return out;
 }
 

@@ -305,6 +305,48 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 }
 
+// Issue #5: the boundary of a point cloud can be given instead of detected.
+TEST_F(CliTest, reconstruct_with_given_boundary_points) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 10000 --seed 3 -q -o " + path("c.xyz") + " --boundary-out " +
+                         path("rim.xyz")).exit_code, 0);
+  {  // both rims in one file, every 10th exact vertex (a sparse pick)
+    std::ofstream out(path("rims.xyz"));
+    for (const char* name : {"rim.0.xyz", "rim.1.xyz"}) {
+      std::ifstream in(path(name));
+      std::string line;
+      for (int i = 0; std::getline(in, line); ++i)
+        if (i % 10 == 0) out << line << "\n";
+    }
+  }
+  const auto r = run_envcrust("reconstruct " + path("c.xyz") + " --boundary " + path("rims.xyz") +
+                              " -r builtin:cylinder -o " + path("c.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["input_boundary_curves"], 2);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 2);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+
+  // Refused: a point off the surface (named with its file), builtin input, --no-boundary.
+  {
+    std::ofstream out(path("far.xyz"));
+    out << "1 0 0\n0 0 9\n";
+  }
+  const auto far = run_envcrust("reconstruct " + path("c.xyz") + " --boundary " + path("far.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(far.exit_code, 1);
+  EXPECT_EQ(far.err.rfind("envcrust: error: " + path("far.xyz") + ": boundary point 1 at (0, 0, 9) is ", 0), 0u) << far.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+  const auto builtin = run_envcrust("reconstruct builtin:cylinder --boundary " + path("rims.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(builtin.exit_code, 2);
+  EXPECT_EQ(builtin.err, "envcrust: usage error: --boundary applies to point files: builtin:cylinder brings its exact boundary\n");
+  const auto both = run_envcrust("reconstruct " + path("c.xyz") + " --no-boundary --boundary " + path("rims.xyz") +
+                                 " -o " + path("x.ply"));
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_EQ(both.err, "envcrust: usage error: --no-boundary excludes --boundary\n");
+}
+
 TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   ASSERT_EQ(run_envcrust("sample moebius --mesh -q -o " + path("m.off")).exit_code, 0);
   const auto r = run_envcrust("reconstruct " + path("m.off") + " -r builtin:moebius -o " + path("r.ply") + " --json");
