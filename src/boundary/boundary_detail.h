@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,7 @@ struct Centreline {
   double end_gap = 0.0;    ///< distance between the ends of the ordered diameter path
   double length = 0.0;     ///< length of the closed centreline
   double open_length = 0.0;  ///< its length without the closing segment (last to first)
+  double join_gap = 0.0;     ///< made of two open arcs: the longer of the two joins, else 0
 };
 
 /// Order a component along the diameter path of its linking-graph MST, then replace the path
@@ -95,6 +97,19 @@ struct GivenCurves {
 };
 GivenCurves order_given_points(const std::vector<Point3>& points, const Candidates& candidates,
                                double bin_width);
+
+/// The centre line of a band of boundary candidates as one closed cycle: the band thinned to
+/// seeds `radius` apart (greedy, in index order), each seed replaced by the centroid of the
+/// band points nearest to it, the centroids joined by their NN-crust, from which spurs and
+/// rungs are pruned. nullopt unless that leaves a single cycle (curve_linking.cpp).
+std::optional<Polyline> band_cycle(const std::vector<Point3>& points, const std::vector<std::size_t>& component,
+                                   double radius);
+
+/// A centreline of `band` along the closed `loop` (an ordering of it, with vertices closer
+/// than `bin_width`): band points binned by the arc position of their nearest loop vertex,
+/// `bin_width` long bins, each bin's average a vertex; end_gap is the loop's closing segment
+/// (curve_linking.cpp).
+Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin_width);
 
 /// Closed polyline resampled at equal arc length with ceil(L / spacing) vertices
 /// (curve_frames.cpp).

@@ -3,6 +3,10 @@
 #include "boundary_detail.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
 #include <limits>
 #include <numeric>
 #include <tuple>
@@ -138,6 +142,110 @@ std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& 
   return adj;
 }
 
+namespace {
+
+// Removes one edge (a, b) from an adjacency list graph.
+void erase_edge(std::vector<std::vector<std::size_t>>& adj, std::size_t a, std::size_t b) {
+  adj[a].erase(std::find(adj[a].begin(), adj[a].end(), b));
+  adj[b].erase(std::find(adj[b].begin(), adj[b].end(), a));
+}
+
+// Reduces a nearly cyclic graph to its cycle: repeatedly removes the shortest chain (path
+// through points with two joins) that is a spur (it ends at a point with one join) or a rung
+// (both ends have three or more), the defects a band's centroids leave in their NN-crust.
+// Points left without joins are dropped. Then walks the cycle; nullopt unless the points left
+// form exactly one cycle of at least 3, or if more than `max_rounds` removals were needed.
+std::optional<Polyline> single_cycle(const Polyline& pts, std::vector<std::vector<std::size_t>> adj,
+                                     int max_rounds = 8) {
+  const std::size_t n = pts.size();
+  for (int round = 0;; ++round) {
+    std::vector<std::size_t> best;  // vertices of the chain to remove, ends included
+    for (std::size_t v = 0; v < n; ++v) {
+      if (adj[v].size() == 2 || adj[v].empty()) continue;
+      for (const std::size_t first : adj[v]) {
+        std::vector<std::size_t> chain{v, first};
+        while (adj[chain.back()].size() == 2 && chain.back() != v) {
+          const std::size_t at = chain.back(), from = chain[chain.size() - 2];
+          chain.push_back(adj[at][0] == from ? adj[at][1] : adj[at][0]);
+        }
+        const std::size_t end = chain.back();
+        const bool is_spur = adj[v].size() == 1 || adj[end].size() == 1;
+        const bool is_rung = end != v && adj[v].size() >= 3 && adj[end].size() >= 3;
+        if ((is_spur || is_rung) && (best.empty() || chain.size() < best.size())) best = chain;
+      }
+    }
+    if (best.empty()) break;
+    if (round == max_rounds) return std::nullopt;
+    for (std::size_t k = 0; k + 1 < best.size(); ++k) erase_edge(adj, best[k], best[k + 1]);
+  }
+  std::size_t start = n, used = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (adj[v].empty()) continue;
+    if (adj[v].size() != 2) return std::nullopt;
+    if (start == n) start = v;
+    ++used;
+  }
+  if (used < 3) return std::nullopt;
+  Polyline out;
+  std::size_t previous = adj[start][1], at = start;
+  do {
+    out.push_back(pts[at]);
+    const std::size_t next = adj[at][0] == previous ? adj[at][1] : adj[at][0];
+    previous = at;
+    at = next;
+  } while (at != start && out.size() <= used);
+  if (out.size() != used) return std::nullopt;  // several cycles
+  return out;
+}
+
+}  // namespace
+
+std::optional<Polyline> band_cycle(const std::vector<Point3>& points, const std::vector<std::size_t>& component,
+                                   double radius) {
+  // Greedy thinning in index order on a grid of cell `radius`: seeds at least `radius` apart.
+  using Key = std::array<long long, 3>;
+  auto key_of = [radius](const Point3& p) {
+    return Key{static_cast<long long>(std::floor(p.x() / radius)), static_cast<long long>(std::floor(p.y() / radius)),
+               static_cast<long long>(std::floor(p.z() / radius))};
+  };
+  std::map<Key, std::vector<std::size_t>> grid;  // seed ids (into `seeds`) per cell
+  Polyline seeds;
+  for (const std::size_t i : component) {
+    const Point3& p = points[i];
+    const Key k = key_of(p);
+    bool is_covered = false;
+    for (long long dx = -1; dx <= 1 && !is_covered; ++dx)
+      for (long long dy = -1; dy <= 1 && !is_covered; ++dy)
+        for (long long dz = -1; dz <= 1 && !is_covered; ++dz) {
+          const auto it = grid.find(Key{k[0] + dx, k[1] + dy, k[2] + dz});
+          if (it == grid.end()) continue;
+          for (const std::size_t sid : it->second)
+            if (CGAL::squared_distance(seeds[sid], p) < radius * radius) {
+              is_covered = true;
+              break;
+            }
+        }
+    if (!is_covered) {
+      grid[k].push_back(seeds.size());
+      seeds.push_back(p);
+    }
+  }
+  if (seeds.size() < 3) return std::nullopt;
+  // Each seed becomes the centroid of the band points nearest to it: a sample of the band's
+  // centre line about `radius` apart.
+  const PointIndex seed_index(seeds);
+  std::vector<Vector3> sums(seeds.size(), Vector3(0, 0, 0));
+  std::vector<std::size_t> counts(seeds.size(), 0);
+  for (const std::size_t i : component) {
+    const std::size_t sid = seed_index.nearest(points[i], 1).front();
+    sums[sid] = sums[sid] + (points[i] - CGAL::ORIGIN);
+    ++counts[sid];
+  }
+  Polyline centres;
+  for (std::size_t k = 0; k < seeds.size(); ++k) centres.push_back(CGAL::ORIGIN + sums[k] / static_cast<double>(counts[k]));
+  return single_cycle(centres, nn_crust_edges(centres));
+}
+
 GivenCurves order_given_points(const std::vector<Point3>& points, const Candidates& candidates,
                                double bin_width) {
   const auto [ids, marked] = flagged_subset(points, candidates);
@@ -156,24 +264,25 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
         }
     std::vector<std::size_t> component;
     double longest = 0.0;
-    bool is_cycle = members.size() >= 3;
     for (const std::size_t a : members) {
       component.push_back(ids[a]);
-      is_cycle = is_cycle && adj[a].size() == 2;
       for (const std::size_t b : adj[a]) longest = std::max(longest, std::sqrt(CGAL::squared_distance(marked[a], marked[b])));
     }
+    Polyline local;
+    std::vector<std::size_t> slot(ids.size(), 0);
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      slot[members[m]] = m;
+      local.push_back(marked[members[m]]);
+    }
+    std::vector<std::vector<std::size_t>> local_adj(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m)
+      for (const std::size_t b : adj[members[m]]) local_adj[m].push_back(slot[b]);
     Centreline line;
-    if (is_cycle) {  // walk it
-      std::size_t previous = adj[start][1], at = start;
-      do {
-        line.points.push_back(marked[at]);
-        const std::size_t next = adj[at][0] == previous ? adj[at][1] : adj[at][0];
-        previous = at;
-        at = next;
-      } while (at != start && line.points.size() <= members.size());
+    if (const auto cycle = single_cycle(local, local_adj)) {
+      line.points = *cycle;
       line.length = closed_length(line.points);
-      line.open_length = line.length - std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
       line.end_gap = std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
+      line.open_length = line.length - line.end_gap;
     } else {
       std::sort(component.begin(), component.end());
       line = order_component(points, component, 1.01 * longest, bin_width);
@@ -182,6 +291,36 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
     out.components.push_back(std::move(component));
     out.centrelines.push_back(std::move(line));
   }
+  return out;
+}
+
+Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin_width) {
+  Centreline out;
+  const std::size_t n = loop.size();
+  std::vector<double> arc(n + 1, 0.0);  // arc[n]: the whole closed length
+  for (std::size_t k = 0; k < n; ++k) arc[k + 1] = arc[k] + std::sqrt(CGAL::squared_distance(loop[k], loop[(k + 1) % n]));
+  const double total = arc[n];
+  out.end_gap = std::sqrt(CGAL::squared_distance(loop.back(), loop.front()));
+  if (!(total > 0)) {
+    out.points = loop;
+    return out;
+  }
+  // The arc position of a band point is that of its nearest loop vertex.
+  const PointIndex loop_index(loop);
+  auto position = [&](const Point3& p) { return arc[loop_index.nearest(p, 1).front()]; };
+  const auto bins = static_cast<std::size_t>(std::max(3.0, std::round(total / bin_width)));
+  std::vector<Vector3> sums(bins, Vector3(0, 0, 0));
+  std::vector<std::size_t> counts(bins, 0);
+  for (const Point3& p : band) {
+    const auto bin = std::min(bins - 1, static_cast<std::size_t>(position(p) / total * static_cast<double>(bins)));
+    sums[bin] = sums[bin] + (p - CGAL::ORIGIN);
+    ++counts[bin];
+  }
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (counts[b] > 0) out.points.push_back(CGAL::ORIGIN + sums[b] / static_cast<double>(counts[b]));
+  }
+  out.length = closed_length(out.points);
+  out.open_length = out.length - std::sqrt(CGAL::squared_distance(out.points.back(), out.points.front()));
   return out;
 }
 
@@ -222,37 +361,11 @@ Centreline order_component(const std::vector<Point3>& points,
   const std::size_t end_a = farthest(adj, 0, parent);
   const std::size_t end_b = farthest(adj, end_a, parent);
   Polyline path;
-  std::vector<double> arc;
   for (std::size_t v = end_b;; v = parent[v]) {
-    if (!path.empty()) {
-      arc.push_back(arc.back() + std::sqrt(CGAL::squared_distance(path.back(), local[v])));
-    } else {
-      arc.push_back(0.0);
-    }
     path.push_back(local[v]);
     if (v == end_a) break;
   }
-  out.end_gap = std::sqrt(CGAL::squared_distance(local[end_a], local[end_b]));
-  const double total = arc.back() + out.end_gap;
-  // Bin every component point by the arc-length position of its nearest path vertex.
-  const auto bins = static_cast<std::size_t>(std::max(3.0, std::round(total / bin_width)));
-  std::vector<Vector3> sums(bins, Vector3(0, 0, 0));
-  std::vector<std::size_t> counts(bins, 0);
-  const PointIndex path_index(path);
-  for (const Point3& p : local) {
-    const std::size_t v = path_index.nearest(p, 1).front();
-    const auto bin = std::min(bins - 1, static_cast<std::size_t>(arc[v] / total *
-                                                                 static_cast<double>(bins)));
-    sums[bin] = sums[bin] + (p - CGAL::ORIGIN);
-    ++counts[bin];
-  }
-  for (std::size_t b = 0; b < bins; ++b) {
-    if (counts[b] > 0) out.points.push_back(CGAL::ORIGIN + sums[b] / static_cast<double>(counts[b]));
-  }
-  out.length = closed_length(out.points);
-  out.open_length =
-      out.length - std::sqrt(CGAL::squared_distance(out.points.back(), out.points.front()));
-  return out;
+  return bin_along_loop(local, path, bin_width);
 }
 
 }  // namespace envcrust::boundary::detail

@@ -23,6 +23,15 @@ namespace {
 
 using detail::format_number;
 
+// Seed spacing of band_cycle, in spacings s: the flagged band is 1-2 s wide.
+constexpr double kBandSeedSpacing = 4.0;
+// Longest join between two open arcs made into one loop, in s: a slot a few spacings wide
+// whose tight ends went unflagged (the bunny's long base slot: 4.6 s).
+constexpr double kMaxArcJoin = 10.0;
+// Shortest arc joined, as a fraction of min_loop_length: false-candidate chains around random
+// voids reach 10 s at 50k points (two of them were joined into a false loop on the saddle).
+constexpr double kMinJoinedArc = 0.6;
+
 void require(bool ok, const std::string& field, double value, const std::string& range) {
   if (!ok) {
     throw InvalidOptions("boundary detection: " + field + " must be " + range + " (got " +
@@ -149,7 +158,10 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
       continue;
     }
     const std::size_t id = out.curves.size();
-    if (line.end_gap > std::max(options.close_distance * s, 0.0)) {
+    if (line.join_gap > 0) {
+      out.warnings.push_back("curve " + std::to_string(id) + ": two open arcs joined into one loop across gaps of up to " +
+                             format_number(line.join_gap / s) + " spacings (the hole's thin ends went undetected)");
+    } else if (line.end_gap > options.close_distance * s) {
       out.warnings.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
                              format_number(line.end_gap / s) +
                              " spacings apart; closed across the gap");
@@ -177,6 +189,71 @@ Vector3 centroid_conormal(const std::vector<Point3>& points, const Vector3& n,
   for (const std::size_t j : neighbors)
     if (j != self) sum = sum + (points[j] - points[self]);
   return detail::unit_perpendicular(-sum, n);
+}
+
+// Pairs of open arcs (ordered bands whose ends stay more than `close_gap` apart, such as the
+// two flagged sides of a slot whose tight ends went unflagged) joined end to end into one
+// loop, when both joins are shorter than `max_join` and together shorter than the two arcs'
+// own closing gaps, and both arcs at least `min_arc` long (chains of false candidates around
+// random voids stay shorter). Greedy, shortest joins first; joined components are merged into the first.
+// Returns the number of joins made.
+std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, std::vector<detail::Centreline>& lines,
+                           double close_gap, double max_join, double min_arc) {
+  struct Join {
+    double cost;
+    std::size_t a, b;
+    bool reverse_b;
+  };
+  auto dist = [](const Point3& p, const Point3& q) { return std::sqrt(CGAL::squared_distance(p, q)); };
+  std::vector<Join> joins;
+  for (std::size_t a = 0; a < lines.size(); ++a) {
+    if (lines[a].end_gap <= close_gap || lines[a].open_length < min_arc) continue;
+    for (std::size_t b = a + 1; b < lines.size(); ++b) {
+      if (lines[b].end_gap <= close_gap || lines[b].open_length < min_arc) continue;
+      const Polyline &pa = lines[a].points, &pb = lines[b].points;
+      for (const bool reverse : {false, true}) {
+        const Point3& b_first = reverse ? pb.back() : pb.front();
+        const Point3& b_last = reverse ? pb.front() : pb.back();
+        const double j1 = dist(pa.back(), b_first), j2 = dist(b_last, pa.front());
+        if (j1 < max_join && j2 < max_join && j1 + j2 < lines[a].end_gap + lines[b].end_gap)
+          joins.push_back({j1 + j2, a, b, reverse});
+      }
+    }
+  }
+  std::sort(joins.begin(), joins.end(), [](const Join& x, const Join& y) { return x.cost < y.cost; });
+  std::vector<char> used(lines.size(), 0), absorbed(lines.size(), 0);
+  std::size_t made = 0;
+  for (const Join& j : joins) {
+    if (used[j.a] || used[j.b]) continue;
+    used[j.a] = used[j.b] = 1;
+    absorbed[j.b] = 1;
+    Polyline& pa = lines[j.a].points;
+    Polyline pb = lines[j.b].points;
+    if (j.reverse_b) std::reverse(pb.begin(), pb.end());
+    const double join_in = dist(pa.back(), pb.front());
+    pa.insert(pa.end(), pb.begin(), pb.end());
+    detail::Centreline& line = lines[j.a];
+    line.end_gap = dist(pa.back(), pa.front());
+    line.join_gap = std::max(join_in, line.end_gap);
+    line.length = 0;
+    for (std::size_t k = 0; k < pa.size(); ++k) line.length += dist(pa[k], pa[(k + 1) % pa.size()]);
+    line.open_length = line.length - dist(pa.back(), pa.front());
+    components[j.a].insert(components[j.a].end(), components[j.b].begin(), components[j.b].end());
+    std::sort(components[j.a].begin(), components[j.a].end());
+    ++made;
+  }
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    if (absorbed[k]) continue;
+    if (kept != k) {
+      lines[kept] = std::move(lines[k]);
+      components[kept] = std::move(components[k]);
+    }
+    ++kept;
+  }
+  lines.resize(kept);
+  components.resize(kept);
+  return made;
 }
 
 // Checked options and unit normals of a cloud with enough points for the neighbour queries.
@@ -211,10 +288,24 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points,
                                      options.link_min_conormal_dot);
   }
   const double link_radius = options.link_distance * s;
-  const auto components =
+  auto components =
       detail::link_candidates(points, candidates, link_radius, options.link_min_conormal_dot);
   std::vector<detail::Centreline> lines;
-  for (const auto& component : components) lines.push_back(detail::order_component(points, component, link_radius, s));
+  // Each band is ordered along the diameter path of its linking tree; when that path's ends
+  // stay apart (a small or ragged loop whose tree branches), along the NN-crust cycle of its
+  // thinned centre line instead, if it has one.
+  for (const auto& component : components) {
+    detail::Centreline line = detail::order_component(points, component, link_radius, s);
+    if (line.end_gap > options.close_distance * s) {
+      if (const auto cycle = detail::band_cycle(points, component, kBandSeedSpacing * s)) {
+        Polyline band;
+        for (const std::size_t i : component) band.push_back(points[i]);
+        line = detail::bin_along_loop(band, detail::resample_closed(*cycle, 0.5 * s), s);
+      }
+    }
+    lines.push_back(std::move(line));
+  }
+  join_open_arcs(components, lines, options.close_distance * s, kMaxArcJoin * s, kMinJoinedArc * options.min_loop_length * s);
   build_curves(points, normals, index, candidates, options, components, lines, true, out);
   return out;
 }

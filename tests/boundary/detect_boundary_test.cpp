@@ -236,5 +236,40 @@ TEST(DetectBoundary, MinLoopWidthDropsNarrowSamplingGapsAndKeepsHoles) {
   EXPECT_EQ(wide.dropped_loops, all.dropped_loops + (all.curves.size() - 2));
 }
 
+
+// A unit square sampled at random (seed 7, 12k points) with a lens-shaped hole, |y - 0.5| <
+// 0.03 (1 - ((x - 0.5) / 0.25)^2): its tips are too thin for the angle-gap test, so its two
+// sides are flagged as two open arcs (the bunny's base slots look like this).
+TEST(DetectBoundary, LensHoleWithUnflaggedTipsIsOneLoop) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point3> points;
+  while (points.size() < 12000) {
+    const double x = u(rng), y = u(rng), t = (x - 0.5) / 0.25;
+    if (std::abs(t) < 1 && std::abs(y - 0.5) < 0.03 * (1 - t * t)) continue;
+    points.emplace_back(x, y, 0.0);
+  }
+  const std::vector<Vector3> normals(points.size(), Vector3(0, 0, 1));
+  const auto result = boundary::detect_boundary(points, normals);
+  ASSERT_EQ(result.curves.size(), 2u);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_NE(result.warnings[0].find(": two open arcs joined into one loop across gaps of up to "), std::string::npos)
+      << result.warnings[0];
+  // One curve is the lens: inside the square's margin, spanning most of its length.
+  std::size_t lenses = 0;
+  for (const BoundaryCurve& c : result.curves) {
+    double xmin = 1, xmax = 0, ymin = 1, ymax = 0;
+    for (const BoundaryVertex& v : c.vertices) {
+      xmin = std::min(xmin, v.position.x()), xmax = std::max(xmax, v.position.x());
+      ymin = std::min(ymin, v.position.y()), ymax = std::max(ymax, v.position.y());
+    }
+    if (xmin > 0.2 && xmax < 0.8 && ymin > 0.4 && ymax < 0.6) {
+      ++lenses;
+      EXPECT_GT(xmax - xmin, 0.3);
+    }
+  }
+  EXPECT_EQ(lenses, 1u);
+}
+
 }  // namespace
 }  // namespace envcrust
