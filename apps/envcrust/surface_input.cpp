@@ -103,24 +103,29 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   }
   out.samples.points = std::move(points.points);
   out.samples.normals = std::move(points.normals);
-  if (!sampling.boundary_file.empty()) {
-    const PointSet given = io::read_points(sampling.boundary_file);
-    boundary::BoundaryDetection curves;
-    try {
-      curves = boundary::boundary_from_points(out.samples.points, out.samples.normals, given, sampling.boundary);
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(sampling.boundary_file + ": " + e.what());
+  // Too few points for the neighbour queries: say which file.
+  try {
+    if (!sampling.boundary_file.empty()) {
+      const PointSet given = io::read_points(sampling.boundary_file);
+      boundary::BoundaryDetection curves;
+      try {
+        curves = boundary::boundary_from_points(out.samples.points, out.samples.normals, given, sampling.boundary);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(sampling.boundary_file + ": " + e.what());
+      }
+      out.notes.push_back("boundary given: " + std::to_string(curves.curves.size()) + " curves from " +
+                          std::to_string(given.size()) + " points of " + sampling.boundary_file);
+      out.samples.boundary = std::move(curves.curves);
+      for (auto& w : curves.warnings) out.notes.push_back(std::move(w));
+    } else if (sampling.detect_boundary) {
+      auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, sampling.boundary);
+      out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
+                          std::to_string(detection.dropped_loops) + " short loops dropped)");
+      out.samples.boundary = std::move(detection.curves);
+      for (auto& w : detection.warnings) out.notes.push_back(std::move(w));
     }
-    out.notes.push_back("boundary given: " + std::to_string(curves.curves.size()) + " curves from " +
-                        std::to_string(given.size()) + " points of " + sampling.boundary_file);
-    out.samples.boundary = std::move(curves.curves);
-    for (auto& w : curves.warnings) out.notes.push_back(std::move(w));
-  } else if (sampling.detect_boundary) {
-    auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, sampling.boundary);
-    out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
-                        std::to_string(detection.dropped_loops) + " short loops dropped)");
-    out.samples.boundary = std::move(detection.curves);
-    for (auto& w : detection.warnings) out.notes.push_back(std::move(w));
+  } catch (const DegenerateInput& e) {
+    throw DegenerateInput(spec + ": " + e.what());
   }
   return out;
 }

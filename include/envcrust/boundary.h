@@ -62,7 +62,8 @@ struct BoundaryOptions {
   /// reads its diameter, a slot of width w about 2w); local spacing = median over the loop's
   /// points of the distance to their 6th neighbour. 0 (default) keeps every loop. Measured:
   /// the foot scan's ankle reads 13.4, two unsampled stripes on its sole 4.6 and 5.3; the
-  /// bunny's base holes 7.3, 8.2 and 3.9 (two holes fused into one loop). >= 0.
+  /// bunny's base holes 7.3, 8.2 and 3.9 (two holes fused into one loop; measured before open
+  /// arcs were joined, when its slots came out as pairs of thin loops). >= 0.
   double min_loop_width = 0.0;
   /// Output curve vertex spacing (arc length, absolute units, > 0); nullopt: spacing s.
   std::optional<double> curve_spacing;

@@ -55,6 +55,12 @@ std::size_t farthest(const std::vector<std::vector<std::pair<std::size_t, double
   return best;
 }
 
+// Removes one edge (a, b) from an adjacency list graph.
+void erase_edge(std::vector<std::vector<std::size_t>>& adj, std::size_t a, std::size_t b) {
+  adj[a].erase(std::find(adj[a].begin(), adj[a].end(), b));
+  adj[b].erase(std::find(adj[b].begin(), adj[b].end(), a));
+}
+
 double closed_length(const Polyline& p) {
   double len = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -134,21 +140,12 @@ std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& 
   std::stable_sort(edges.begin(), edges.end(),
                    [&](const auto& x, const auto& y) { return length_of(x) > length_of(y); });
   for (const auto& [a, b] : edges) {
-    if (adj[a].size() > 2 && adj[b].size() > 2) {
-      adj[a].erase(std::find(adj[a].begin(), adj[a].end(), b));
-      adj[b].erase(std::find(adj[b].begin(), adj[b].end(), a));
-    }
+    if (adj[a].size() > 2 && adj[b].size() > 2) erase_edge(adj, a, b);
   }
   return adj;
 }
 
 namespace {
-
-// Removes one edge (a, b) from an adjacency list graph.
-void erase_edge(std::vector<std::vector<std::size_t>>& adj, std::size_t a, std::size_t b) {
-  adj[a].erase(std::find(adj[a].begin(), adj[a].end(), b));
-  adj[b].erase(std::find(adj[b].begin(), adj[b].end(), a));
-}
 
 // Reduces a nearly cyclic graph to its cycle: repeatedly removes the shortest chain (path
 // through points with two joins) that is a spur (it ends at a point with one join) or a rung

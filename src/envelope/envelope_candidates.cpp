@@ -39,11 +39,26 @@ void add_pair(std::vector<EnvelopeSample>& out, const Point3& g, const Vector3& 
 
 }  // namespace
 
+std::vector<double> neighbour_distances(const std::vector<Point3>& points) {
+  std::vector<double> rk_of(points.size(), 0.0);
+  if (points.empty()) return rk_of;
+  NeighborSearch::Tree tree(points.begin(), points.end());
+  tree.build();
+  const unsigned k = std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(points.size()));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      double rk2 = 0.0;
+      NeighborSearch search(tree, points[i], k);
+      for (const auto& hit : search) rk2 = std::max(rk2, hit.second);
+      rk_of[i] = std::sqrt(rk2);
+    }
+  });
+  return rk_of;
+}
+
 std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std::vector<double>& rho,
                                              double spacing_rel_rho, double per_h2, std::uint64_t seed,
-                                             std::vector<double>& rk_of) {
-  NeighborSearch::Tree tree(s.points.begin(), s.points.end());
-  tree.build();
+                                             const std::vector<double>& rk_of) {
   // Generators spread over a tangent disk must stay on M: near a boundary curve, drop those
   // beyond it (the rim covers that part of the envelope).
   std::vector<Point3> rim_points;
@@ -59,17 +74,7 @@ std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std:
     const auto [b, d] = rim_index.nearest(g);
     return (g - rim_points[b]) * rim_conormals[b] > 0.0;
   };
-  // r_k per point (parallel), then the generators in input order (one random stream).
-  rk_of.assign(s.points.size(), 0.0);
-  const unsigned k = std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(s.points.size()));
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.points.size(), 1024), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      double rk2 = 0.0;
-      NeighborSearch search(tree, s.points[i], k);
-      for (const auto& hit : search) rk2 = std::max(rk2, hit.second);
-      rk_of[i] = std::sqrt(rk2);
-    }
-  });
+  // The generators in input order (one random stream).
   std::mt19937_64 rng(seed);
   std::vector<EnvelopeSample> out;
   out.reserve(4 * s.points.size());

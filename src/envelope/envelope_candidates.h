@@ -8,13 +8,17 @@
 
 namespace envcrust::envelope {
 
-/// Sheet candidates g +- rho_i n (rho one value per sample, h_i = spacing_rel_rho rho_i): each input sample spreads `m` generators uniformly over the
-/// tangent disk of radius r_k (distance to its k-th neighbour), with m chosen so that the
-/// sheets get about `per_h2` candidates per h^2 (input denser than that keeps each sample as a
-/// generator with the matching probability). Sets `neighbour_distance` to r_k per sample.
+/// r_k per sample: the distance to its 8th nearest other sample (in parallel).
+std::vector<double> neighbour_distances(const std::vector<Point3>& points);
+
+/// Sheet candidates g +- rho_i n (rho one value per sample, h_i = spacing_rel_rho rho_i):
+/// each input sample spreads `m` generators uniformly over the tangent disk of radius r_k
+/// (`neighbour_distance`, from neighbour_distances), with m chosen so that the sheets get about
+/// `per_h2` candidates per h^2 (input denser than that keeps each sample as a generator with
+/// the matching probability).
 std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& surface, const std::vector<double>& rho,
                                              double spacing_rel_rho, double per_h2, std::uint64_t seed,
-                                             std::vector<double>& neighbour_distance);
+                                             const std::vector<double>& neighbour_distance);
 
 /// Rim half-circles b + rho (cos t n + sin t c), t in [0, pi], along every boundary curve
 /// resampled at arc length <= step_rel_h * h, and lunes at convex corners; rim_rho holds rho per

@@ -113,6 +113,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   out.spacing = options.spacing_rel_rho * out.rho;
   out.rho_min = out.rho;
 
+  out.input_neighbour_distance = neighbour_distances(surface.points);
   std::vector<double> rho(surface.points.size(), out.rho);
   if (options.rho_mode == RhoMode::Adaptive) {
     out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing);

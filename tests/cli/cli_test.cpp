@@ -347,6 +347,17 @@ TEST_F(CliTest, reconstruct_with_given_boundary_points) {
   EXPECT_EQ(both.err, "envcrust: usage error: --no-boundary excludes --boundary\n");
 }
 
+TEST_F(CliTest, reconstruct_too_few_points_names_the_file) {
+  {
+    std::ofstream out(path("few.xyz"));
+    for (int i = 0; i < 20; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << "\n";
+  }
+  const auto r = run_envcrust("reconstruct " + path("few.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("few.xyz") + ": boundary detection needs at least neighbors + 1 = 33 points (got 20)\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   ASSERT_EQ(run_envcrust("sample moebius --mesh -q -o " + path("m.off")).exit_code, 0);
   const auto r = run_envcrust("reconstruct " + path("m.off") + " -r builtin:moebius -o " + path("r.ply") + " --json");
