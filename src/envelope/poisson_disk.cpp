@@ -32,6 +32,19 @@ std::vector<std::size_t> shuffled_order(std::size_t n, std::uint64_t seed) {
   return order;
 }
 
+// Cell offsets within `reach` cells, nearest first: a rejected candidate (most are) meets its
+// conflict in the first few cells looked at. The decision does not depend on the order.
+std::vector<CellKey> offsets_nearest_first(std::int64_t reach) {
+  std::vector<CellKey> out;
+  for (std::int64_t dx = -reach; dx <= reach; ++dx)
+    for (std::int64_t dy = -reach; dy <= reach; ++dy)
+      for (std::int64_t dz = -reach; dz <= reach; ++dz) out.push_back({dx, dy, dz});
+  std::stable_sort(out.begin(), out.end(), [](const CellKey& a, const CellKey& b) {
+    return a.x * a.x + a.y * a.y + a.z * a.z < b.x * b.x + b.y * b.y + b.z * b.z;
+  });
+  return out;
+}
+
 CellKey key_of(const Point3& p, double cell) {
   return CellKey{static_cast<std::int64_t>(std::floor(p.x() / cell)),
                  static_cast<std::int64_t>(std::floor(p.y() / cell)),
@@ -48,17 +61,19 @@ std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, do
   std::unordered_map<CellKey, std::size_t, CellHash> grid;
   grid.reserve(points.size() / 4 + 16);
   std::vector<std::size_t> kept;
+  // Kept points within `radius` lie at most 2 cells away (cell = radius / sqrt 3).
+  const std::vector<CellKey> offsets = offsets_nearest_first(2);
   for (std::size_t index : order) {
     const Point3& p = points[index];
     const CellKey k = key_of(p, cell);
     bool free = true;
-    // Kept points within `radius` lie at most 2 cells away (cell = radius / sqrt 3).
-    for (std::int64_t dx = -2; dx <= 2 && free; ++dx)
-      for (std::int64_t dy = -2; dy <= 2 && free; ++dy)
-        for (std::int64_t dz = -2; dz <= 2 && free; ++dz) {
-          const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
-          if (it != grid.end() && CGAL::squared_distance(points[it->second], p) <= r2) free = false;
-        }
+    for (const CellKey& d : offsets) {
+      const auto it = grid.find({k.x + d.x, k.y + d.y, k.z + d.z});
+      if (it != grid.end() && CGAL::squared_distance(points[it->second], p) <= r2) {
+        free = false;
+        break;
+      }
+    }
     if (free) {
       grid.emplace(k, index);
       kept.push_back(index);
@@ -80,23 +95,23 @@ std::vector<std::size_t> poisson_disk_thin(const std::vector<Point3>& points, co
   std::unordered_map<CellKey, std::vector<std::size_t>, CellHash> grid;
   grid.reserve(points.size() / 4 + 16);
   std::vector<std::size_t> kept;
+  const std::vector<CellKey> by_reach[3] = {offsets_nearest_first(0), offsets_nearest_first(1), offsets_nearest_first(2)};
   for (std::size_t index : order) {
     const Point3& p = points[index];
     const double r2 = radii[index] * radii[index];
-    const auto reach = static_cast<std::int64_t>(std::ceil(radii[index] / cell));
+    const auto reach = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::ceil(radii[index] / cell)), 0, 2);
     const CellKey k = key_of(p, cell);
     bool free = true;
-    for (std::int64_t dx = -reach; dx <= reach && free; ++dx)
-      for (std::int64_t dy = -reach; dy <= reach && free; ++dy)
-        for (std::int64_t dz = -reach; dz <= reach && free; ++dz) {
-          const auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
-          if (it == grid.end()) continue;
-          for (std::size_t other : it->second)
-            if (CGAL::squared_distance(points[other], p) <= r2) {
-              free = false;
-              break;
-            }
+    for (const CellKey& d : by_reach[reach]) {
+      const auto it = grid.find({k.x + d.x, k.y + d.y, k.z + d.z});
+      if (it == grid.end()) continue;
+      for (std::size_t other : it->second)
+        if (CGAL::squared_distance(points[other], p) <= r2) {
+          free = false;
+          break;
         }
+      if (!free) break;
+    }
     if (free) {
       grid[k].push_back(index);
       kept.push_back(index);

@@ -3,6 +3,8 @@
 
 #include "envcrust/union_find.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <tuple>
 
@@ -35,7 +37,9 @@ MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t 
       half_edges.push_back({a, b, f, k});
     }
   }
-  std::sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+  // A total order (every half-edge has its own face and slot): the parallel sort's result is
+  // the sequential one's.
+  tbb::parallel_sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
     return std::tie(x.a, x.b, x.face, x.slot) < std::tie(y.a, y.b, y.face, y.slot);
   });
   g.face_edges.resize(g.faces.size());
