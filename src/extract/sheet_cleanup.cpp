@@ -8,7 +8,9 @@
 #include "envcrust/union_find.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -70,17 +72,34 @@ std::size_t split_pinched_vertices(TaggedMesh& t) {
   for (int round = 0; round < 4; ++round) {
     const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
     const auto fan = topology::corner_fans(g);
-    // Fans of each vertex: root corner -> faces.
-    std::vector<std::map<std::uint32_t, std::vector<std::uint32_t>>> fans(g.num_vertices);
-    for (std::uint32_t f = 0; f < g.faces.size(); ++f)
-      for (std::uint32_t k = 0; k < 3; ++k) fans[g.faces[f][k]][fan[3 * f + k]].push_back(f);
+    // Pinched vertices (corners in two or more fans) first: almost every vertex has one fan,
+    // and per-vertex containers for all of them cost more than the rest of the step.
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> first_fan(g.num_vertices, kNone);
+    std::vector<char> is_pinched(g.num_vertices, 0);
+    for (std::uint32_t c = 0; c < 3 * g.faces.size(); ++c) {
+      const Index v = g.faces[c / 3][c % 3];
+      if (first_fan[v] == kNone) first_fan[v] = fan[c];
+      else if (first_fan[v] != fan[c]) is_pinched[v] = 1;
+    }
+    // (vertex, fan, face) of the pinched vertices' corners, in that order.
+    std::vector<std::array<std::uint32_t, 3>> corners;
+    for (std::uint32_t c = 0; c < 3 * g.faces.size(); ++c) {
+      const Index v = g.faces[c / 3][c % 3];
+      if (is_pinched[v]) corners.push_back({v, fan[c], c / 3});
+    }
+    std::sort(corners.begin(), corners.end());
     std::vector<char> remove(g.faces.size(), 0);
-    bool changed = false;
-    for (Index v = 0; v < g.num_vertices; ++v) {
-      if (fans[v].size() < 2) continue;
-      changed = true;
+    const bool changed = !corners.empty();
+    for (std::size_t begin = 0; begin < corners.size();) {
+      const Index v = corners[begin][0];
       std::vector<std::vector<std::uint32_t>> list;
-      for (auto& [root, faces] : fans[v]) list.push_back(std::move(faces));
+      std::size_t end = begin;
+      for (; end < corners.size() && corners[end][0] == v; ++end) {
+        if (end == begin || corners[end][1] != corners[end - 1][1]) list.emplace_back();
+        list.back().push_back(corners[end][2]);
+      }
+      begin = end;
       std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) {
         return a.size() != b.size() ? a.size() > b.size() : a.front() < b.front();
       });
