@@ -43,18 +43,16 @@ void validate(const SheetOptions& o) {
 // max_face_distance_rel_rho times its rho and its distance to the 8th nearest sample (where
 // the input is sparse, the sheet spans gaps wider than rho; the envelope measured it).
 std::vector<double> far_distances(const envelope::EnvelopeSamples& envelope, const envelope::SurfaceSamples& surface,
-                                  const SheetOptions& options) {
+                                  const NearestIndex& index, const SheetOptions& options) {
   const auto& pts = surface.points;
   std::vector<double> out(pts.size());
   const auto& spacing = envelope.input_neighbour_distance;
   const bool known = spacing.size() == pts.size();
-  std::optional<NearestIndex> index;
-  if (!known) index.emplace(pts);
   const auto k = static_cast<unsigned>(std::min<std::size_t>(pts.size(), 9));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
-      const double gap = known ? spacing[i] : index->nearest(pts[i], k).back().second;
+      const double gap = known ? spacing[i] : index.nearest(pts[i], k).back().second;
       out[i] = std::max(options.max_face_distance_rel_rho * rho, gap);
     }
   });
@@ -66,15 +64,15 @@ std::vector<double> far_distances(const envelope::EnvelopeSamples& envelope, con
 // times its distance to the nearest other sample (a point of M lies about that far from the
 // nearest sample, whatever rho), at most rho.
 std::vector<double> component_distances(const envelope::EnvelopeSamples& envelope,
-                                        const envelope::SurfaceSamples& surface, const SheetOptions& options) {
+                                        const envelope::SurfaceSamples& surface, const NearestIndex& index,
+                                        const SheetOptions& options) {
   const auto& pts = surface.points;
   std::vector<double> out(pts.size());
-  std::optional<NearestIndex> index;
-  if (options.max_component_distance_rel_spacing > 0 && pts.size() > 1) index.emplace(pts);
+  const bool use_spacing = options.max_component_distance_rel_spacing > 0 && pts.size() > 1;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
-      const double spacing = index ? index->nearest(pts[i], 2).back().second : 0.0;
+      const double spacing = use_spacing ? index.nearest(pts[i], 2).back().second : 0.0;
       out[i] = std::max(options.max_component_distance_rel_rho * rho,
                         std::min(options.max_component_distance_rel_spacing * spacing, rho));
     }
@@ -94,20 +92,22 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   result.stats.polygons = raw.polygons.size();
 
   TaggedMesh sheet = triangulate_sheet(raw);
+  // One kd-tree of the surface samples for every step below.
+  const NearestIndex samples(surface.points);
   // Distances that scale with rho use the local rho of the nearest sample (adaptive rho),
   // hole filling the smallest rho (a hole of 2 pi rho_min is below resolution everywhere).
-  const std::vector<double> max_distance = component_distances(envelope, surface, options);
+  const std::vector<double> max_distance = component_distances(envelope, surface, samples, options);
   const double fill_rho = envelope.local_rho.empty() ? envelope.rho : envelope.rho_min;
   if (options.max_face_distance_rel_rho > 0)
-    result.stats.far_faces_removed = drop_far_faces(sheet, surface.points, far_distances(envelope, surface, options));
+    result.stats.far_faces_removed = drop_far_faces(sheet, samples, far_distances(envelope, surface, samples, options));
   // Outer medial-axis pieces go first: they would otherwise meet the sheet at non-manifold
   // edges and take part in the repairs.
   result.stats.components_dropped += filter_components(
-      sheet, surface.points, max_distance, 0.0);
+      sheet, samples, max_distance, 0.0);
   result.stats.non_manifold_faces_removed = resolve_non_manifold_edges(sheet);
   result.stats.vertices_split = split_pinched_vertices(sheet);
   result.stats.components_dropped += filter_components(
-      sheet, surface.points, max_distance, options.min_component_area_fraction);
+      sheet, samples, max_distance, options.min_component_area_fraction);
   if (options.fill_loops_shorter_than_rel_rho > 0) {
     result.stats.holes_filled =
         fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
@@ -118,14 +118,14 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (options.use_projection) {
     const bool is_noisy = envelope.noise > options.noisy_rel_rho * envelope.rho;
     const auto moved = project_onto_samples(
-        sheet, surface, envelope.rho,
+        sheet, surface, samples, envelope.rho,
         static_cast<unsigned>(is_noisy ? options.noisy_projection_neighbors : options.projection_neighbors),
         static_cast<unsigned>(options.projection_retry_rounds));
     trim_beyond_boundary(sheet, surface, 2.0 * envelope.rho);
     // Trimming cuts off crumbs and leaves pinholes where single faces reached past the
     // boundary.
     result.stats.components_dropped += filter_components(
-        sheet, surface.points, max_distance, options.min_component_area_fraction);
+        sheet, samples, max_distance, options.min_component_area_fraction);
     if (options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled +=
           fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);

@@ -7,6 +7,9 @@
 #include "envcrust/topology.h"
 #include "envcrust/union_find.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -139,7 +142,7 @@ std::size_t split_pinched_vertices(TaggedMesh& t) {
   return copies;
 }
 
-std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_points,
+std::size_t filter_components(TaggedMesh& t, const NearestIndex& nearest,
                               const std::vector<double>& max_distance, double min_area_fraction) {
   if (t.mesh.triangles.empty()) return 0;
   const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
@@ -149,7 +152,6 @@ std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_
       uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
   std::map<std::uint32_t, std::vector<std::uint32_t>> components;
   for (std::uint32_t f = 0; f < g.faces.size(); ++f) components[uf.find(f)].push_back(f);
-  const NearestIndex nearest(surface_points);
   double total_area = 0.0;
   std::vector<double> areas;
   std::vector<double> medians;
@@ -188,21 +190,18 @@ std::size_t filter_components(TaggedMesh& t, const std::vector<Point3>& surface_
   return dropped;
 }
 
-std::size_t drop_far_faces(TaggedMesh& t, const std::vector<Point3>& surface_points,
-                           const std::vector<double>& max_distance) {
-  if (t.mesh.triangles.empty() || surface_points.empty()) return 0;
-  const NearestIndex nearest(surface_points);
+std::size_t drop_far_faces(TaggedMesh& t, const NearestIndex& nearest, const std::vector<double>& max_distance) {
+  if (t.mesh.triangles.empty() || nearest.empty()) return 0;
   std::vector<char> remove(t.mesh.triangles.size(), 0);
-  std::size_t dropped = 0;
-  for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
-    const auto& tri = t.mesh.triangles[f];
-    const Point3 centre = CGAL::centroid(t.mesh.vertices[tri[0]], t.mesh.vertices[tri[1]], t.mesh.vertices[tri[2]]);
-    const auto [j, distance] = nearest.nearest(centre);
-    if (distance > max_distance[j]) {
-      remove[f] = 1;
-      ++dropped;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, t.mesh.triangles.size(), 1024), [&](const auto& range) {
+    for (std::size_t f = range.begin(); f != range.end(); ++f) {
+      const auto& tri = t.mesh.triangles[f];
+      const Point3 centre = CGAL::centroid(t.mesh.vertices[tri[0]], t.mesh.vertices[tri[1]], t.mesh.vertices[tri[2]]);
+      const auto [j, distance] = nearest.nearest(centre);
+      remove[f] = distance > max_distance[j] ? 1 : 0;
     }
-  }
+  });
+  const auto dropped = static_cast<std::size_t>(std::count(remove.begin(), remove.end(), 1));
   remove_faces(t, remove);
   return dropped;
 }

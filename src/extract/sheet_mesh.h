@@ -5,6 +5,8 @@
 
 #include "voronoi_sheet.h"
 
+#include "envcrust/nearest_index.h"
+
 #include <vector>
 
 namespace envcrust::extract {
@@ -29,15 +31,16 @@ std::size_t resolve_non_manifold_edges(TaggedMesh& tagged);
 std::size_t split_pinched_vertices(TaggedMesh& tagged);
 
 /// Keep the components whose median over vertices of d(v, s) / max_distance[s], s the nearest
-/// of `surface_points` (one max_distance per point: local rho and spacing set it), is below 1 and
-/// whose area is at least `min_area_fraction` of the total. Returns the number dropped.
-std::size_t filter_components(TaggedMesh& tagged, const std::vector<Point3>& surface_points,
+/// surface sample in `samples` (one max_distance per sample: local rho and spacing set it), is
+/// below 1 and whose area is at least `min_area_fraction` of the total. Returns the number
+/// dropped.
+std::size_t filter_components(TaggedMesh& tagged, const NearestIndex& samples,
                               const std::vector<double>& max_distance, double min_area_fraction);
 
 /// Remove the faces whose centroid lies farther than max_distance[s] from its nearest surface
 /// sample s: pieces of the medial axis of the region that M encloses (the inside of a foot)
 /// hang on the sheet where they meet it and survive the component filter. Returns the count.
-std::size_t drop_far_faces(TaggedMesh& tagged, const std::vector<Point3>& surface_points,
+std::size_t drop_far_faces(TaggedMesh& tagged, const NearestIndex& samples,
                            const std::vector<double>& max_distance);
 
 /// Fill (centroid fan) the border loops of which fewer than half the vertices lie within

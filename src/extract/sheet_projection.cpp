@@ -197,12 +197,12 @@ BoundaryPolylines polylines_of(const envelope::SurfaceSamples& surface) {
 }  // namespace
 
 ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSamples& surface,
-                                     double max_move, unsigned neighbors, unsigned retry_rounds) {
+                                     const NearestIndex& samples, double max_move, unsigned neighbors,
+                                     unsigned retry_rounds) {
   ProjectionStats stats;
   auto& m = t.mesh;
   const auto faces_of = faces_of_vertices(m);
   const auto is_border = border_vertices(m, border_loops(m));
-  const NearestIndex samples(surface.points);
   // Each target depends on the vertex's own (unmoved) position only.
   std::vector<Point3> targets(m.vertices.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.vertices.size(), 256), [&](const auto& range) {

@@ -16,7 +16,8 @@ struct ProjectionStats {
 /// it) is halved, then refused, and refused or halved moves are retried up to `retry_rounds`
 /// times after the other vertices have moved.
 ProjectionStats project_onto_samples(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
-                                     double max_move, unsigned neighbors, unsigned retry_rounds);
+                                     const NearestIndex& samples, double max_move, unsigned neighbors,
+                                     unsigned retry_rounds);
 
 /// Cut away what lies beyond the boundary curves: the level (x - b) . c, b the nearest point of
 /// a boundary curve (within `reach`) and c its outward conormal, is trimmed at zero. The
