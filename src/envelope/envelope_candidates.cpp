@@ -1,5 +1,6 @@
 // Candidate generation on the three parts of the envelope (METHOD.md §3.1).
 #include "envelope_candidates.h"
+#include "input_tree.h"
 
 #include "envcrust/nearest_index.h"
 #include "envcrust/random.h"
@@ -15,8 +16,6 @@
 namespace envcrust::envelope {
 namespace {
 
-using SearchTraits = CGAL::Search_traits_3<Kernel>;
-using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
 
 constexpr unsigned kNeighbors = 8;  // r_k of the 8th neighbour covers the gaps of random samples
 
@@ -39,16 +38,14 @@ void add_pair(std::vector<EnvelopeSample>& out, const Point3& g, const Vector3& 
 
 }  // namespace
 
-std::vector<double> neighbour_distances(const std::vector<Point3>& points) {
+std::vector<double> neighbour_distances(const std::vector<Point3>& points, const PointTree& tree) {
   std::vector<double> rk_of(points.size(), 0.0);
   if (points.empty()) return rk_of;
-  NeighborSearch::Tree tree(points.begin(), points.end());
-  tree.build();
   const unsigned k = std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(points.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       double rk2 = 0.0;
-      NeighborSearch search(tree, points[i], k);
+      PointSearch search(tree, points[i], k);
       for (const auto& hit : search) rk2 = std::max(rk2, hit.second);
       rk_of[i] = std::sqrt(rk2);
     }

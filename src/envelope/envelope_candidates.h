@@ -8,12 +8,9 @@
 
 namespace envcrust::envelope {
 
-/// r_k per sample: the distance to its 8th nearest other sample (in parallel).
-std::vector<double> neighbour_distances(const std::vector<Point3>& points);
-
 /// Sheet candidates g +- rho_i n (rho one value per sample, h_i = spacing_rel_rho rho_i):
 /// each input sample spreads `m` generators uniformly over the tangent disk of radius r_k
-/// (`neighbour_distance`, from neighbour_distances), with m chosen so that the sheets get about
+/// (`neighbour_distance`, from neighbour_distances in input_tree.h), with m chosen so that the sheets get about
 /// `per_h2` candidates per h^2 (input denser than that keeps each sample as a generator with
 /// the matching probability).
 std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& surface, const std::vector<double>& rho,

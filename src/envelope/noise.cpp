@@ -1,5 +1,7 @@
 // Noise level of a point sample: the typical distance of points from the plane fitted to
 // their neighbours.
+#include "input_tree.h"
+
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 
@@ -14,8 +16,6 @@
 namespace envcrust::envelope {
 namespace {
 
-using SearchTraits = CGAL::Search_traits_3<Kernel>;
-using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
 
 // RMS distance of the neighbours to their least-squares plane: sqrt of the smallest
 // eigenvalue of their covariance.
@@ -36,12 +36,16 @@ double plane_residual(const std::vector<Point3>& neighbours) {
 }  // namespace
 
 double estimate_noise(const std::vector<Point3>& points, const NoiseOptions& options) {
+  PointTree tree(points.begin(), points.end());
+  tree.build();
+  return estimate_noise(points, tree, options);
+}
+
+double estimate_noise(const std::vector<Point3>& points, const PointTree& tree, const NoiseOptions& options) {
   if (options.neighbors < 4)
     throw InvalidOptions("NoiseOptions::neighbors must be at least 4 (got " + std::to_string(options.neighbors) + ")");
   if (points.size() < 4) throw InvalidInput("noise: need at least 4 points");
   const auto k = static_cast<unsigned>(std::min<std::size_t>(options.neighbors, points.size()));
-  NeighborSearch::Tree tree(points.begin(), points.end());
-  tree.build();
   // An even stride over the input: deterministic, and enough points for a median.
   const std::size_t stride = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, options.max_points));
   const std::size_t count = (points.size() + stride - 1) / stride;
@@ -50,7 +54,7 @@ double estimate_noise(const std::vector<Point3>& points, const NoiseOptions& opt
     std::vector<Point3> neighbours;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       neighbours.clear();
-      NeighborSearch search(tree, points[i * stride], k);
+      PointSearch search(tree, points[i * stride], k);
       for (const auto& [p, d2] : search) neighbours.push_back(p);
       residual[i] = plane_residual(neighbours);
     }

@@ -6,21 +6,20 @@
 
 #include "envelope_candidates.h"
 #include "poisson_disk.h"
-#include "spacing.h"
+#include "input_tree.h"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <sstream>
 
 namespace envcrust::envelope {
 namespace {
 
-using SearchTraits = CGAL::Search_traits_3<Kernel>;
-using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<SearchTraits>;
 
 constexpr double kCandidatesPerH2 = 12.0;  // METHOD.md §3.1 asks for >= 10 per h^2
 // Gaps of the input up to this many rho are bridged by the envelope's sheets. Measured on
@@ -91,8 +90,11 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   validate(surface, options);
   EnvelopeSamples out;
   const double diag = mesh::bbox_diagonal(surface.points);
-  out.noise = surface.points.size() >= 4 ? estimate_noise(surface.points) : 0.0;
-  const double average_spacing = strided_average_spacing(surface.points, 6);
+  // One kd-tree of the input for the noise, the spacing, r_k and the clearance test.
+  PointTree input_tree(surface.points.begin(), surface.points.end());
+  input_tree.build();
+  out.noise = surface.points.size() >= 4 ? estimate_noise(surface.points, input_tree, NoiseOptions{}) : 0.0;
+  const double average_spacing = strided_average_spacing(surface.points, input_tree, 6);
   if (options.rho) {
     out.rho = *options.rho;
   } else {
@@ -113,7 +115,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   out.spacing = options.spacing_rel_rho * out.rho;
   out.rho_min = out.rho;
 
-  out.input_neighbour_distance = neighbour_distances(surface.points);
+  out.input_neighbour_distance = neighbour_distances(surface.points, input_tree);
   std::vector<double> rho(surface.points.size(), out.rho);
   if (options.rho_mode == RhoMode::Adaptive) {
     out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing);
@@ -142,19 +144,25 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
 
   // Clearance: a candidate nearer than the clearance to M is not on its envelope (the
   // envelope of a sampled surface, or a self-intersecting envelope when rho is too large).
-  std::vector<Point3> reference = surface.points;
+  // The distance to the input and its boundary curves: the input's tree and one of the curves.
+  std::vector<Point3> curve_points;
   for (const auto& c : surface.boundary)
-    for (const auto& b : c.vertices) reference.push_back(b.position);
-  NeighborSearch::Tree tree(reference.begin(), reference.end());
-  tree.build();
+    for (const auto& b : c.vertices) curve_points.push_back(b.position);
+  PointTree curve_tree(curve_points.begin(), curve_points.end());
+  curve_tree.build();
+  auto nearest_distance2 = [&](const Point3& q) {
+    double d2 = std::numeric_limits<double>::infinity();
+    if (!surface.points.empty()) d2 = PointSearch(input_tree, q, 1).begin()->second;
+    if (!curve_points.empty()) d2 = std::min(d2, PointSearch(curve_tree, q, 1).begin()->second);
+    return d2;
+  };
   std::vector<char> keep(candidates.size(), 1);
   std::vector<char> folds(candidates.size(), 0);
   const double noise_allowance = 3.0 * out.noise;
   const bool is_adaptive = options.rho_mode == RhoMode::Adaptive;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      NeighborSearch search(tree, candidates[i].position, 1);
-      const double d = std::sqrt(search.begin()->second);
+      const double d = std::sqrt(nearest_distance2(candidates[i].position));
       const double clearance =
           candidates[i].part == EnvelopePart::Sheet ? options.sheet_clearance : options.rim_clearance;
       // The candidate's own rho: the distance to its generator.

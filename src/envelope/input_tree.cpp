@@ -1,8 +1,6 @@
 // Average sample spacing on an even stride of the points, with a kd-tree of all of them.
-#include "spacing.h"
+#include "input_tree.h"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
@@ -12,11 +10,9 @@
 
 namespace envcrust::envelope {
 
-double strided_average_spacing(const std::vector<Point3>& points, unsigned k, std::size_t max_points) {
-  using NeighborSearch = CGAL::Orthogonal_k_neighbor_search<CGAL::Search_traits_3<Kernel>>;
+double strided_average_spacing(const std::vector<Point3>& points, const PointTree& tree, unsigned k,
+                               std::size_t max_points) {
   if (points.size() < 2) return 0.0;
-  NeighborSearch::Tree tree(points.begin(), points.end());
-  tree.build();
   const unsigned neighbors = static_cast<unsigned>(std::min<std::size_t>(k + 1, points.size()));
   const std::size_t stride = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_points));
   const std::size_t count = (points.size() + stride - 1) / stride;
@@ -24,7 +20,7 @@ double strided_average_spacing(const std::vector<Point3>& points, unsigned k, st
       tbb::blocked_range<std::size_t>(0, count, 256), 0.0,
       [&](const tbb::blocked_range<std::size_t>& r, double acc) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-          NeighborSearch search(tree, points[i * stride], neighbors);
+          PointSearch search(tree, points[i * stride], neighbors);
           double s = 0.0;
           for (const auto& hit : search) s += std::sqrt(hit.second);
           acc += s / neighbors;
