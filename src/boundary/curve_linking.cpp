@@ -239,7 +239,8 @@ std::optional<Polyline> band_cycle(const std::vector<Point3>& points, const std:
     ++counts[sid];
   }
   Polyline centres;
-  for (std::size_t k = 0; k < seeds.size(); ++k) centres.push_back(CGAL::ORIGIN + sums[k] / static_cast<double>(counts[k]));
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    centres.push_back(CGAL::ORIGIN + sums[k] / static_cast<double>(counts[k]));
   return single_cycle(centres, nn_crust_edges(centres));
 }
 
@@ -263,7 +264,8 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
     double longest = 0.0;
     for (const std::size_t a : members) {
       component.push_back(ids[a]);
-      for (const std::size_t b : adj[a]) longest = std::max(longest, std::sqrt(CGAL::squared_distance(marked[a], marked[b])));
+      for (const std::size_t b : adj[a])
+        longest = std::max(longest, std::sqrt(CGAL::squared_distance(marked[a], marked[b])));
     }
     Polyline local;
     std::vector<std::size_t> slot(ids.size(), 0);
@@ -295,7 +297,8 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
   Centreline out;
   const std::size_t n = loop.size();
   std::vector<double> arc(n + 1, 0.0);  // arc[n]: the whole closed length
-  for (std::size_t k = 0; k < n; ++k) arc[k + 1] = arc[k] + std::sqrt(CGAL::squared_distance(loop[k], loop[(k + 1) % n]));
+  for (std::size_t k = 0; k < n; ++k)
+    arc[k + 1] = arc[k] + std::sqrt(CGAL::squared_distance(loop[k], loop[(k + 1) % n]));
   const double total = arc[n];
   out.end_gap = std::sqrt(CGAL::squared_distance(loop.back(), loop.front()));
   if (!(total > 0)) {
@@ -309,7 +312,8 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
   std::vector<Vector3> sums(bins, Vector3(0, 0, 0));
   std::vector<std::size_t> counts(bins, 0);
   for (const Point3& p : band) {
-    const auto bin = std::min(bins - 1, static_cast<std::size_t>(position(p) / total * static_cast<double>(bins)));
+    const auto bin =
+        std::min(bins - 1, static_cast<std::size_t>(position(p) / total * static_cast<double>(bins)));
     sums[bin] = sums[bin] + (p - CGAL::ORIGIN);
     ++counts[bin];
   }

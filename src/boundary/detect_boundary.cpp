@@ -118,7 +118,6 @@ double local_spacing(const std::vector<Point3>& points, const detail::PointIndex
   return *mid;
 }
 
-
 // Turns each component of flagged candidates, with its ordered centreline, into a closed,
 // framed curve (resampled, smoothed); fills `out` (curves, flags, conormals, warnings). With
 // `drop_small`, components shorter than min_loop_length or narrower than min_loop_width are
@@ -159,8 +158,10 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     }
     const std::size_t id = out.curves.size();
     if (line.join_gap > 0) {
-      out.warnings.push_back("curve " + std::to_string(id) + ": two open arcs joined into one loop across gaps of up to " +
-                             format_number(line.join_gap / s) + " spacings (the hole's thin ends went undetected)");
+      out.warnings.push_back("curve " + std::to_string(id) +
+                             ": two open arcs joined into one loop across gaps of up to " +
+                             format_number(line.join_gap / s) +
+                             " spacings (the hole's thin ends went undetected)");
     } else if (line.end_gap > options.close_distance * s) {
       out.warnings.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
                              format_number(line.end_gap / s) +
@@ -195,10 +196,11 @@ Vector3 centroid_conormal(const std::vector<Point3>& points, const Vector3& n,
 // two flagged sides of a slot whose tight ends went unflagged) joined end to end into one
 // loop, when both joins are shorter than `max_join` and together shorter than the two arcs'
 // own closing gaps, and both arcs at least `min_arc` long (chains of false candidates around
-// random voids stay shorter). Greedy, shortest joins first; joined components are merged into the first.
-// Returns the number of joins made.
-std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, std::vector<detail::Centreline>& lines,
-                           double close_gap, double max_join, double min_arc) {
+// random voids stay shorter). Greedy, shortest joins first; joined components are merged
+// into the first. Returns the number of joins made.
+std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components,
+                           std::vector<detail::Centreline>& lines, double close_gap, double max_join,
+                           double min_arc) {
   struct Join {
     double cost;
     std::size_t a, b;
