@@ -63,10 +63,10 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
   auto* no_boundary = sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
                                    "Point files: do not detect boundary curves (a closed surface)");
-  sub.add_option("--boundary", cmd.sampling.boundary_file,
-                 "Point files: boundary points to use instead of detecting them (a point file, any "
-                 "order, several loops; each marks its nearest sample; normals, if any, are outward "
-                 "conormals)")->excludes(no_boundary);
+  sub.add_option("--boundary", cmd.sampling.boundary_files,
+                 "Point files: boundary points to use instead of detecting them (point files in any "
+                 "order or closed .polyline curves, repeatable, several loops; each point marks its "
+                 "nearest sample; normals, if every file has them, are outward conormals)")->excludes(no_boundary);
   sub.add_option("--boundary-min-width", cmd.sampling.boundary.min_loop_width,
                  "Point files: drop detected loops narrower than this many local spacings "
                  "(sampling gaps, not holes); 0 keeps all")->capture_default_str();

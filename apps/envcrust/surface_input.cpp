@@ -54,11 +54,31 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
                       " border loops");
 }
 
+// The points of every --boundary file: a point file, or a closed curve (.polyline). Their
+// normals (outward conormals) are kept only if every file has them.
+PointSet read_boundary_points(const std::vector<std::string>& files) {
+  PointSet all;
+  bool has_normals = true;
+  for (const auto& file : files) {
+    PointSet part;
+    if (io::extension_of(file) == "polyline") {
+      part.points = io::read_polyline(file);
+    } else {
+      part = io::read_points(file);
+    }
+    has_normals = has_normals && part.has_normals();
+    all.points.insert(all.points.end(), part.points.begin(), part.points.end());
+    all.normals.insert(all.normals.end(), part.normals.begin(), part.normals.end());
+  }
+  if (!has_normals) all.normals.clear();
+  return all;
+}
+
 }  // namespace
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling) {
   LoadedSurface out;
-  if (!sampling.boundary_file.empty() && is_builtin_spec(spec))
+  if (!sampling.boundary_files.empty() && is_builtin_spec(spec))
     throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
   if (is_builtin_spec(spec)) {
     const auto surface = surfaces::make_builtin(spec.substr(std::string("builtin:").size()));
@@ -86,7 +106,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     }
   }
   if (mesh) {
-    if (!sampling.boundary_file.empty())
+    if (!sampling.boundary_files.empty())
       throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
     load_mesh_samples(std::move(*mesh), spec, out);
     return out;
@@ -105,16 +125,18 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   out.samples.normals = std::move(points.normals);
   // Too few points for the neighbour queries: say which file.
   try {
-    if (!sampling.boundary_file.empty()) {
-      const PointSet given = io::read_points(sampling.boundary_file);
+    if (!sampling.boundary_files.empty()) {
+      const PointSet given = read_boundary_points(sampling.boundary_files);
+      std::string names;
+      for (const auto& f : sampling.boundary_files) names += (names.empty() ? "" : ", ") + f;
       boundary::BoundaryDetection curves;
       try {
         curves = boundary::boundary_from_points(out.samples.points, out.samples.normals, given, sampling.boundary);
       } catch (const InvalidInput& e) {
-        throw InvalidInput(sampling.boundary_file + ": " + e.what());
+        throw InvalidInput(names + ": " + e.what());
       }
       out.notes.push_back("boundary given: " + std::to_string(curves.curves.size()) + " curves from " +
-                          std::to_string(given.size()) + " points of " + sampling.boundary_file);
+                          std::to_string(given.size()) + " points of " + names);
       out.samples.boundary = std::move(curves.curves);
       for (auto& w : curves.warnings) out.notes.push_back(std::move(w));
     } else if (sampling.detect_boundary) {

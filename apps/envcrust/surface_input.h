@@ -17,7 +17,9 @@ struct BuiltinSampling {
   double noise_rel_diag = 0.0;
   std::uint64_t seed = 1;
   bool detect_boundary = true;   ///< point files: find boundary curves (off: treat as closed)
-  std::string boundary_file;     ///< point files: boundary points given instead of detected
+  /// Point files: boundary points given instead of detected, from point files or closed
+  /// `.polyline` curves (all files together).
+  std::vector<std::string> boundary_files;
   boundary::BoundaryOptions boundary;  ///< point files: options of the boundary detector
 };
 

@@ -329,6 +329,17 @@ TEST_F(CliTest, reconstruct_with_given_boundary_points) {
   EXPECT_EQ(a["is_manifold"], true);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 
+  // The same loops as closed curves, one .polyline file each (as `sample --boundary-out`
+  // writes them), the option repeated.
+  ASSERT_EQ(run_envcrust("sample cylinder -q --boundary-out " + path("rim.polyline")).exit_code, 0);
+  const auto curves = run_envcrust("reconstruct " + path("c.xyz") + " --boundary " + path("rim.0.polyline") +
+                                   " --boundary " + path("rim.1.polyline") + " -o " + path("c2.ply") + " --json");
+  ASSERT_EQ(curves.exit_code, 0) << curves.err;
+  const auto jc = nlohmann::json::parse(curves.out);
+  EXPECT_EQ(jc["input_boundary_curves"], 2);
+  EXPECT_EQ(jc["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(jc["analysis"]["boundary_loops"], 2);
+
   // Refused: a point off the surface (named with its file), builtin input, --no-boundary.
   {
     std::ofstream out(path("far.xyz"));
