@@ -110,8 +110,10 @@ std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& 
     }
   };
   for (std::size_t a = 0; a < n; ++a) {
-    // Grow the query until a point on the far side of the nearest one turns up.
-    for (std::size_t k = std::min<std::size_t>(16, n);; k = std::min(2 * k, n)) {
+    // Grow the query until a point on the far side of the nearest one turns up; none among
+    // the 64 nearest: the point ends an open curve (and the search stays cheap).
+    const std::size_t k_max = std::min<std::size_t>(64, n);
+    for (std::size_t k = std::min<std::size_t>(16, n);; k = std::min(2 * k, k_max)) {
       const auto near = index.nearest(points[a], k);
       std::size_t nearest = n, other = n;
       for (const std::size_t b : near) {
@@ -125,7 +127,7 @@ std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& 
       }
       if (nearest != n) join(a, nearest);
       if (other != n) join(a, other);
-      if (other != n || k == n) break;
+      if (other != n || k == k_max) break;
     }
   }
   // At a sharp corner the far-side neighbour can lie on another curve: drop joins between two
@@ -250,6 +252,7 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
   const auto adj = nn_crust_edges(marked);
   GivenCurves out;
   std::vector<char> seen(ids.size(), 0);
+  std::vector<std::size_t> slot(ids.size(), 0);  // position of a marked point in its component
   for (std::size_t start = 0; start < ids.size(); ++start) {
     if (seen[start]) continue;
     std::vector<std::size_t> members{start};
@@ -267,8 +270,8 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
       for (const std::size_t b : adj[a])
         longest = std::max(longest, std::sqrt(CGAL::squared_distance(marked[a], marked[b])));
     }
+    std::sort(component.begin(), component.end());
     Polyline local;
-    std::vector<std::size_t> slot(ids.size(), 0);
     for (std::size_t m = 0; m < members.size(); ++m) {
       slot[members[m]] = m;
       local.push_back(marked[members[m]]);
@@ -283,10 +286,8 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
       line.end_gap = std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
       line.open_length = line.length - line.end_gap;
     } else {
-      std::sort(component.begin(), component.end());
       line = order_component(points, component, 1.01 * longest, bin_width);
     }
-    std::sort(component.begin(), component.end());
     out.components.push_back(std::move(component));
     out.centrelines.push_back(std::move(line));
   }
