@@ -193,6 +193,9 @@ struct EnvelopeSamples {
   /// Per input sample, the distance to its 8th nearest other sample (r_k of the sheet
   /// candidates; input_coverage is the largest). The extraction reuses it.
   std::vector<double> input_neighbour_distance;
+  /// Per input sample, the distance to its nearest other sample (same search as r_k); the
+  /// extraction's component filter reuses it.
+  std::vector<double> input_nearest_distance;
   /// Smallest rho whose envelope bridges the largest gap (input_coverage / 2.5); a smaller rho
   /// leaves holes, and a warning says which rho or which input spacing would work.
   double min_rho_for_gaps = 0.0;

@@ -5,8 +5,6 @@
 #include "envcrust/nearest_index.h"
 #include "envcrust/random.h"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -38,19 +36,26 @@ void add_pair(std::vector<EnvelopeSample>& out, const Point3& g, const Vector3& 
 
 }  // namespace
 
-std::vector<double> neighbour_distances(const std::vector<Point3>& points, const PointTree& tree) {
-  std::vector<double> rk_of(points.size(), 0.0);
-  if (points.empty()) return rk_of;
+NeighbourDistances neighbour_distances(const std::vector<Point3>& points, const PointTree& tree) {
+  NeighbourDistances out;
+  out.nearest.assign(points.size(), 0.0);
+  out.rk.assign(points.size(), 0.0);
+  if (points.empty()) return out;
   const unsigned k = std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(points.size()));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      double rk2 = 0.0;
+      // Hits come nearest first; the first is the sample itself (or a duplicate of it).
       PointSearch search(tree, points[i], k);
-      for (const auto& hit : search) rk2 = std::max(rk2, hit.second);
-      rk_of[i] = std::sqrt(rk2);
+      unsigned rank = 0;
+      double rk2 = 0.0;
+      for (const auto& hit : search) {
+        if (rank++ == 1) out.nearest[i] = std::sqrt(hit.second);
+        rk2 = std::max(rk2, hit.second);
+      }
+      out.rk[i] = std::sqrt(rk2);
     }
   });
-  return rk_of;
+  return out;
 }
 
 std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std::vector<double>& rho,

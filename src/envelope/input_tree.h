@@ -26,8 +26,12 @@ double strided_average_spacing(const std::vector<Point3>& points, const PointTre
 /// estimate_noise with the kd-tree of `points` given.
 double estimate_noise(const std::vector<Point3>& points, const PointTree& tree, const NoiseOptions& options);
 
-/// r_k per sample: the distance to its 8th nearest other sample (in parallel); `tree` holds
-/// `points`.
-std::vector<double> neighbour_distances(const std::vector<Point3>& points, const PointTree& tree);
+/// Per sample, from one 9-nearest search (in parallel; `tree` holds `points`): the distance
+/// to its nearest other sample and r_k, the distance to its 8th nearest other sample.
+struct NeighbourDistances {
+  std::vector<double> nearest;
+  std::vector<double> rk;
+};
+NeighbourDistances neighbour_distances(const std::vector<Point3>& points, const PointTree& tree);
 
 }  // namespace envcrust::envelope

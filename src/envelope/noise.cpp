@@ -5,8 +5,6 @@
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 #include <Eigen/Eigenvalues>
 #include <tbb/parallel_for.h>
 

@@ -5,21 +5,18 @@
 #include "envcrust/nearest_index.h"
 
 #include "envelope_candidates.h"
-#include "poisson_disk.h"
 #include "input_tree.h"
+#include "poisson_disk.h"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace envcrust::envelope {
 namespace {
-
 
 constexpr double kCandidatesPerH2 = 12.0;  // METHOD.md §3.1 asks for >= 10 per h^2
 // Gaps of the input up to this many rho are bridged by the envelope's sheets. Measured on
@@ -115,7 +112,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   out.spacing = options.spacing_rel_rho * out.rho;
   out.rho_min = out.rho;
 
-  out.input_neighbour_distance = neighbour_distances(surface.points, input_tree);
+  auto distances = neighbour_distances(surface.points, input_tree);
+  out.input_neighbour_distance = std::move(distances.rk);
+  out.input_nearest_distance = std::move(distances.nearest);
   std::vector<double> rho(surface.points.size(), out.rho);
   if (options.rho_mode == RhoMode::Adaptive) {
     out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing);

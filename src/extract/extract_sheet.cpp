@@ -13,7 +13,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <optional>
 #include <sstream>
 
 namespace envcrust::extract {
@@ -39,6 +38,11 @@ void validate(const SheetOptions& o) {
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
 }
 
+// The envelope radius at surface sample i: its local rho (adaptive) or the one rho.
+double rho_at(const envelope::EnvelopeSamples& envelope, std::size_t i, std::size_t samples) {
+  return envelope.local_rho.size() == samples ? envelope.local_rho[i] : envelope.rho;
+}
+
 // Per surface sample: how far a face of the sheet may lie from it, the larger of
 // max_face_distance_rel_rho times its rho and its distance to the 8th nearest sample (where
 // the input is sparse, the sheet spans gaps wider than rho; the envelope measured it).
@@ -51,9 +55,8 @@ std::vector<double> far_distances(const envelope::EnvelopeSamples& envelope, con
   const auto k = static_cast<unsigned>(std::min<std::size_t>(pts.size(), 9));
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
       const double gap = known ? spacing[i] : index.nearest(pts[i], k).back().second;
-      out[i] = std::max(options.max_face_distance_rel_rho * rho, gap);
+      out[i] = std::max(options.max_face_distance_rel_rho * rho_at(envelope, i, pts.size()), gap);
     }
   });
   return out;
@@ -69,10 +72,12 @@ std::vector<double> component_distances(const envelope::EnvelopeSamples& envelop
   const auto& pts = surface.points;
   std::vector<double> out(pts.size());
   const bool use_spacing = options.max_component_distance_rel_spacing > 0 && pts.size() > 1;
+  const auto& nearest = envelope.input_nearest_distance;
+  const bool known = nearest.size() == pts.size();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const double rho = envelope.local_rho.size() == pts.size() ? envelope.local_rho[i] : envelope.rho;
-      const double spacing = use_spacing ? index.nearest(pts[i], 2).back().second : 0.0;
+      const double rho = rho_at(envelope, i, pts.size());
+      const double spacing = !use_spacing ? 0.0 : known ? nearest[i] : index.nearest(pts[i], 2).back().second;
       out[i] = std::max(options.max_component_distance_rel_rho * rho,
                         std::min(options.max_component_distance_rel_spacing * spacing, rho));
     }
