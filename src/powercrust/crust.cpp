@@ -1,5 +1,6 @@
 // The crust: power faces between In and Out cells, vertices keyed by cell, oriented by the
 // circulation around each In-Out edge, fan-triangulated (METHOD 4.8).
+#include "incident_cells.h"
 #include "robust_centres.h"
 #include "stages.h"
 
@@ -47,14 +48,12 @@ Point3 corner_point(const CellKey& key, const std::vector<Pole>& poles, const Po
 }
 
 void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& poles, Index p,
-                      PolygonChunk& chunk, std::vector<RtCell>& cells, std::vector<CellKey>& corners) {
+                      PolygonChunk& chunk, IncidentCells<Regular>& incident, std::vector<CellKey>& corners) {
   const Regular& rt = *diagram.rt;
   const RtVertex v = diagram.vertex_of_pole[p];
-  cells.clear();
-  rt.incident_cells_threadsafe(v, std::back_inserter(cells));
   // One representative cell per Out neighbour.
   std::vector<std::pair<Index, RtCell>> edges;
-  for (RtCell c : cells)
+  for (RtCell c : incident(rt, v))
     for (int j = 0; j < 4; ++j) {
       const RtVertex w = c->vertex(j);
       if (w != v && !rt.is_infinite(w) && poles[w->info()].label == PoleLabel::Out)
@@ -151,13 +150,13 @@ CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& p
     if (poles[p].label == PoleLabel::In && !poles[p].is_hidden) inner.push_back(static_cast<Index>(p));
 
   tbb::enumerable_thread_specific<PolygonChunk> chunks;
-  tbb::enumerable_thread_specific<std::pair<std::vector<RtCell>, std::vector<CellKey>>> scratch;
+  tbb::enumerable_thread_specific<std::pair<IncidentCells<Regular>, std::vector<CellKey>>> scratch;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, inner.size(), 256),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       auto& chunk = chunks.local();
-                      auto& [cells, corners] = scratch.local();
+                      auto& [incident, corners] = scratch.local();
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        collect_polygons(diagram, poles, inner[i], chunk, cells, corners);
+                        collect_polygons(diagram, poles, inner[i], chunk, incident, corners);
                     });
 
   // Gather polygons in (In, Out) order: the output does not depend on the thread schedule.

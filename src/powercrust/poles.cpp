@@ -2,12 +2,21 @@
 #include "robust_centres.h"
 #include "stages.h"
 
-#include <tbb/enumerable_thread_specific.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
 #include <numeric>
 #include <tuple>
 
@@ -35,39 +44,153 @@ std::array<Delaunay::Vertex_handle, 4> sorted_vertices(Cell c) {
   return v;
 }
 
-// Cell indices of p+ and p- of the sample at vertex v.
-std::array<Index, 2> choose_poles(const Delaunay& dt, Delaunay::Vertex_handle v,
-                                  const std::vector<Point3>& centres, std::vector<Cell>& buffer) {
-  buffer.clear();
-  dt.incident_cells_threadsafe(v, std::back_inserter(buffer));
-  const Point3& s = v->point();
-  // Ties (cospherical inputs) go to the lexicographically smaller centre: a choice that
-  // does not depend on the circulation order.
-  auto better = [&](Index a, double da, Index b, double db) {
-    return b == kNoPole || da > db || (da == db && centres[a] < centres[b]);
-  };
-  Index outer = kNoPole;
-  double outer_d = -1;
-  for (Cell c : buffer) {
-    if (dt.is_infinite(c)) continue;
-    const Index k = c->info();
-    const double d = CGAL::squared_distance(centres[k], s);
-    if (better(k, d, outer, outer_d)) outer = k, outer_d = d;
+// The cell's circumcentre from its vertices in id order (the same bits whichever thread or
+// vertex asks). Unweighted power vertex = circumcentre, with the exact fallback: a nearly
+// flat cell of cospherical samples (grid rings) gives doubles a centre off by the sphere's
+// radius.
+Point3 circumcentre(Cell c) {
+  const auto v = sorted_vertices(c);
+  using Weighted = Kernel::Weighted_point_3;
+  return power_vertex(Weighted(v[0]->point()), Weighted(v[1]->point()), Weighted(v[2]->point()),
+                      Weighted(v[3]->point()));
+}
+
+// The cells of p+ and p- of one sample, with their circumcentres.
+struct PoleChoice {
+  std::array<Cell, 2> cells;     ///< outer, inner
+  std::array<Point3, 2> centres;
+};
+
+// Calls f(cell) for every finite cell, in parallel: a serial walk of the cell container hands
+// out chunks to the threads (the container has no random access, and a vector of handles
+// would take 128 MB for the 16M cells of a 1M-sample torus).
+template <class F>
+void parallel_for_each_finite_cell(const Delaunay& dt, F&& f) {
+  constexpr std::size_t kChunk = 4096;
+  using Chunk = std::vector<Cell>;
+  auto it = dt.finite_cells_begin();
+  const auto end = dt.finite_cells_end();
+  tbb::parallel_pipeline(
+      static_cast<std::size_t>(4 * tbb::this_task_arena::max_concurrency()),
+      tbb::make_filter<void, std::shared_ptr<Chunk>>(tbb::filter_mode::serial_in_order,
+                                                     [&](tbb::flow_control& control) -> std::shared_ptr<Chunk> {
+                                                       if (it == end) {
+                                                         control.stop();
+                                                         return nullptr;
+                                                       }
+                                                       auto chunk = std::make_shared<Chunk>();
+                                                       chunk->reserve(kChunk);
+                                                       for (; it != end && chunk->size() < kChunk; ++it)
+                                                         chunk->push_back(it);
+                                                       return chunk;
+                                                     }) &
+          tbb::make_filter<std::shared_ptr<Chunk>, void>(tbb::filter_mode::parallel,
+                                                         [&](const std::shared_ptr<Chunk>& chunk) {
+                                                           for (Cell c : *chunk) f(c);
+                                                         }));
+}
+
+// Sorted vertex ids: the last tie-break between cells, independent of memory addresses.
+std::array<Index, 4> cell_key(Cell c) {
+  const auto v = sorted_vertices(c);
+  return {v[0]->info(), v[1]->info(), v[2]->info(), v[3]->info()};
+}
+
+// The best candidate cell of one sample so far and the value it is ranked by.
+struct Candidate {
+  double value = 0;
+  Cell cell;
+};
+
+// Larger value wins; ties (cospherical inputs) go to the lexicographically smaller centre,
+// then to the smaller vertex ids: the choice does not depend on the order cells are visited.
+bool ranks_above(double value, const Point3& centre, Cell cell, const Candidate& best) {
+  if (best.cell == Cell()) return true;
+  if (value != best.value) return value > best.value;
+  const Point3 best_centre = circumcentre(best.cell);  // exact ties only: rare
+  if (centre != best_centre) return centre < best_centre;
+  return cell_key(cell) < cell_key(best.cell);
+}
+
+// One spin lock per sample: two cells sharing a sample may be visited at once.
+class SampleLocks {
+ public:
+  explicit SampleLocks(std::size_t n) : flags_(n) {}
+  template <class F>
+  void with(std::size_t i, F&& f) {
+    while (flags_[i].exchange(true, std::memory_order_acquire)) {
+    }
+    f();
+    flags_[i].store(false, std::memory_order_release);
   }
-  const Vector3 to_outer = centres[outer] - s;
-  Index inner = kNoPole, fallback = kNoPole;
-  double inner_d = -1, fallback_dot = 0;
-  for (Cell c : buffer) {
-    if (dt.is_infinite(c)) continue;
-    const Index k = c->info();
-    const double dot = (centres[k] - s) * to_outer;
-    const double d = CGAL::squared_distance(centres[k], s);
-    if (dot <= 0 && better(k, d, inner, inner_d)) inner = k, inner_d = d;
-    if (fallback == kNoPole || dot < fallback_dot) fallback = k, fallback_dot = dot;
-  }
-  // A bounded Voronoi cell always has a vertex on the far side of s; the fallback only
-  // guards against rounding in the dot product.
-  return {outer, inner != kNoPole ? inner : fallback};
+
+ private:
+  std::vector<std::atomic<bool>> flags_;
+};
+
+// p+ and p- of every sample (METHOD 4.5), indexed by sample id, in two passes over the cells:
+// p+ is the cell of largest circumradius among a sample's cells, p- the largest on the far
+// side of p+. Each circumcentre is computed once per pass: storing them (24 bytes x 20 cells
+// per sample on an exact torus) was the stage's peak memory, and collecting each sample's
+// cells cost a hash-set walk per sample.
+std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n) {
+  SampleLocks locks(n);
+  std::vector<Candidate> outer(n);
+  parallel_for_each_finite_cell(dt, [&](Cell c) {
+    const Point3 centre = circumcentre(c);
+    for (int j = 0; j < 4; ++j) {
+      const auto v = c->vertex(j);
+      if (v->info() >= n) continue;  // a bounding corner
+      const double d = CGAL::squared_distance(centre, v->point());
+      locks.with(v->info(), [&] {
+        if (ranks_above(d, centre, c, outer[v->info()])) outer[v->info()] = {d, c};
+      });
+    }
+  });
+  std::vector<PoleChoice> chosen(n);
+  parallel_indices(n, [&](std::size_t i) {
+    chosen[i].cells[0] = outer[i].cell;
+    chosen[i].centres[0] = circumcentre(outer[i].cell);
+  });
+  outer = {};
+  std::vector<Candidate> inner(n), fallback(n);
+  parallel_for_each_finite_cell(dt, [&](Cell c) {
+    const Point3 centre = circumcentre(c);
+    for (int j = 0; j < 4; ++j) {
+      const auto v = c->vertex(j);
+      if (v->info() >= n) continue;
+      const Point3& s = v->point();
+      const double dot = (centre - s) * (chosen[v->info()].centres[0] - s);
+      const double d = CGAL::squared_distance(centre, s);
+      locks.with(v->info(), [&] {
+        if (dot <= 0 && ranks_above(d, centre, c, inner[v->info()])) inner[v->info()] = {d, c};
+        if (ranks_above(-dot, centre, c, fallback[v->info()])) fallback[v->info()] = {-dot, c};
+      });
+    }
+  });
+  parallel_indices(n, [&](std::size_t i) {
+    // A bounded Voronoi cell always has a vertex on the far side of s; the fallback (the
+    // most opposite one) only guards against rounding in the dot product.
+    chosen[i].cells[1] = inner[i].cell != Cell() ? inner[i].cell : fallback[i].cell;
+    chosen[i].centres[1] = circumcentre(chosen[i].cells[1]);
+  });
+  return chosen;
+}
+
+// For each choice k = 2 * j + side (j: position in the visiting order), the first choice of the same cell: poles are then
+// numbered in sample order (p+ before p-) whatever the cells' addresses.
+std::vector<std::size_t> first_choice_of_cell(const std::vector<PoleChoice>& chosen,
+                                              const std::vector<std::size_t>& order) {
+  std::vector<std::pair<const void*, std::size_t>> by_cell(2 * chosen.size());
+  tbb::parallel_for(std::size_t{0}, chosen.size(), [&](std::size_t j) {
+    for (int side = 0; side < 2; ++side) by_cell[2 * j + side] = {&*chosen[order[j]].cells[side], 2 * j + side};
+  });
+  tbb::parallel_sort(by_cell.begin(), by_cell.end());
+  std::vector<std::size_t> first(by_cell.size());
+  for (std::size_t k = 0; k < by_cell.size(); ++k)
+    first[by_cell[k].second] = k > 0 && by_cell[k].first == by_cell[k - 1].first ? first[by_cell[k - 1].second]
+                                                                                 : by_cell[k].second;
+  return first;
 }
 
 double opposite_weight(const Point3& s, const Point3& outer, const Point3& inner) {
@@ -113,73 +236,77 @@ std::vector<Index> weld_poles(std::vector<Pole>& poles, double tolerance) {
   return remap;
 }
 
+// Sample ids along a Hilbert curve (CGAL's spatial sort: deterministic for given points).
+std::vector<std::size_t> spatial_order(const std::vector<Point3>& samples) {
+  std::vector<std::size_t> order(samples.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  using Map = CGAL::Pointer_property_map<Point3>::const_type;
+  CGAL::spatial_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(samples)));
+  return order;
+}
+
 }  // namespace
 
-PoleStage compute_poles(Delaunay& dt, const std::vector<Point3>& samples, bool keep_cells) {
-  const std::vector<Cell> cells = number_finite_cells(dt);
-  std::vector<Point3> centres(cells.size());
-  parallel_indices(cells.size(), [&](std::size_t k) {
-    const auto v = sorted_vertices(cells[k]);
-    // Unweighted power vertex = circumcentre, with the exact fallback: a nearly flat cell of
-    // cospherical samples (grid rings) gives doubles a centre off by the sphere's radius.
-    using Weighted = Kernel::Weighted_point_3;
-    centres[k] = power_vertex(Weighted(v[0]->point()), Weighted(v[1]->point()), Weighted(v[2]->point()),
-                              Weighted(v[3]->point()));
-  });
-
+PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells) {
   const std::size_t n = samples.size();
-  std::vector<Delaunay::Vertex_handle> vertex_of_sample(n);
-  for (auto v : dt.finite_vertex_handles())
-    if (v->info() < n) vertex_of_sample[v->info()] = v;
-
-  std::vector<std::array<Index, 2>> chosen(n);
-  tbb::enumerable_thread_specific<std::vector<Cell>> buffers;
-  parallel_indices(n, [&](std::size_t i) {
-    chosen[i] = choose_poles(dt, vertex_of_sample[i], centres, buffers.local());
-  });
-
-  // One pole per chosen cell, numbered in sample order (p+ before p-).
   PoleStage out;
-  out.finite_cells = cells.size();
-  std::vector<Index> cell_pole(cells.size(), kNoPole);
-  out.poles.reserve(2 * n);
-  out.sample_poles.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    Index ids[2];
-    for (int side = 0; side < 2; ++side) {
-      const Index k = chosen[i][side];
-      if (cell_pole[k] == kNoPole) {
-        cell_pole[k] = static_cast<Index>(out.poles.size());
-        Pole p;
-        p.center = centres[k];
-        p.radius = std::sqrt(CGAL::squared_distance(centres[k], samples[i]));
-        out.poles.push_back(p);
-      }
-      ids[side] = cell_pole[k];
-    }
-    out.sample_poles[i] = {ids[0], ids[1], opposite_weight(samples[i], centres[chosen[i][0]],
-                                                            centres[chosen[i][1]])};
-  }
-  const std::size_t before = out.poles.size();
-  const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
-  const std::vector<Index> remap = weld_poles(out.poles, kWeldTolerance * diagonal);
-  out.welded_poles = before - out.poles.size();
-  for (auto& sp : out.sample_poles) sp.outer = remap[sp.outer], sp.inner = remap[sp.inner];
-  for (auto& cp : cell_pole)
-    if (cp != kNoPole) cp = remap[cp];
+  out.finite_cells = dt->number_of_finite_cells();
+  std::vector<PoleChoice> chosen = choose_poles(*dt, n);
+  const std::vector<std::size_t> order = spatial_order(samples);
 
+  // One pole per chosen cell, numbered in the samples' spatial order (p+ before p-): poles
+  // close in space get close ids, and the passes over the power diagram, which go by pole
+  // id, then walk memory in order. choice_pole[2 j + side]: the pole of sample order[j].
+  std::vector<Index> choice_pole(2 * n);
+  std::size_t pole_count = 0;
+  {
+    const std::vector<std::size_t> first = first_choice_of_cell(chosen, order);
+    for (std::size_t k = 0; k < 2 * n; ++k)
+      choice_pole[k] = first[k] == k ? static_cast<Index>(pole_count++) : choice_pole[first[k]];  // first[k] < k
+  }
   if (keep_cells) {
+    const std::vector<Cell> cells = number_finite_cells(*dt);
+    std::vector<Index> cell_pole(cells.size(), kNoPole);
+    for (std::size_t k = 0; k < 2 * n; ++k) cell_pole[chosen[order[k / 2]].cells[k % 2]->info()] = choice_pole[k];
     out.cells.resize(cells.size());
     parallel_indices(cells.size(), [&](std::size_t k) {
       const auto v = sorted_vertices(cells[k]);
       DelaunayCell& c = out.cells[k];
       for (int j = 0; j < 4; ++j) c.vertices[j] = v[j]->info();
-      c.center = centres[k];
-      c.radius = std::sqrt(CGAL::squared_distance(centres[k], v[0]->point()));
+      c.center = circumcentre(cells[k]);
+      c.radius = std::sqrt(CGAL::squared_distance(c.center, v[0]->point()));
       c.pole = cell_pole[k];
     });
+  }
+  // The triangulation is the largest object of the run: free it before the poles are built
+  // (the power diagram comes next, and the two are never held together, METHOD 4.11).
+  dt.reset();
+
+  out.poles.reserve(pole_count);
+  out.sample_poles.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t i = order[j];
+    for (int side = 0; side < 2; ++side) {
+      if (choice_pole[2 * j + side] != out.poles.size()) continue;  // not its first choice
+      Pole p;
+      p.center = chosen[i].centres[side];
+      p.radius = std::sqrt(CGAL::squared_distance(p.center, samples[i]));
+      out.poles.push_back(p);
+    }
+    out.sample_poles[i] = {choice_pole[2 * j], choice_pole[2 * j + 1],
+                           opposite_weight(samples[i], chosen[i].centres[0], chosen[i].centres[1])};
+  }
+  chosen = {};
+  const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const std::vector<Index> remap = weld_poles(out.poles, kWeldTolerance * diagonal);
+  out.welded_poles = pole_count - out.poles.size();
+  for (auto& sp : out.sample_poles) sp.outer = remap[sp.outer], sp.inner = remap[sp.inner];
+  if (keep_cells) {
+    for (auto& c : out.cells)
+      if (c.pole != kNoPole) c.pole = remap[c.pole];
     tbb::parallel_sort(out.cells.begin(), out.cells.end(),
                        [](const DelaunayCell& a, const DelaunayCell& b) { return a.vertices < b.vertices; });
   }

@@ -69,8 +69,9 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
                                                   parallel(result.samples.size()));
     stats.seconds_delaunay = clock.lap("delaunay");
     clock.begin("poles");
-    PoleStage poles = compute_poles(*dt, result.samples, options.keep_delaunay_cells);
-    dt.reset();  // the DT is the largest object besides the RT: never hold both (METHOD 4.11)
+    // compute_poles frees the DT, the largest object besides the RT: the two are never held
+    // together (METHOD 4.11).
+    PoleStage poles = compute_poles(std::move(dt), result.samples, options.keep_delaunay_cells);
     result.poles = std::move(poles.poles);
     result.sample_poles = std::move(poles.sample_poles);
     result.delaunay_cells = std::move(poles.cells);

@@ -1,6 +1,8 @@
 // The power diagram of the weighted poles (regular triangulation) and its pole graph (METHOD 4.6).
 #include "power_diagram.h"
 
+#include "incident_cells.h"
+
 #include <CGAL/Spatial_lock_grid_3.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
@@ -46,7 +48,7 @@ CoveredLists covered_lists(const std::vector<Index>& cover) {
 void gather_block(const PowerDiagram& diagram, const std::vector<Index>& cover, const CoveredLists& covered,
                   std::size_t begin, std::size_t end, GraphBlock& block) {
   const Regular& rt = *diagram.rt;
-  std::vector<Regular::Cell_handle> cells;
+  IncidentCells<Regular> incident;
   std::vector<Index> row;
   block.degree.assign(end - begin, 0);
   for (std::size_t p = begin; p < end; ++p) {
@@ -55,9 +57,7 @@ void gather_block(const PowerDiagram& diagram, const std::vector<Index>& cover, 
     if (v == RtVertex()) {  // hidden: no power cell; its one neighbour is the pole hiding it
       if (cover[p] != kNoPole) row.push_back(cover[p]);
     } else {
-      cells.clear();
-      rt.incident_cells_threadsafe(v, std::back_inserter(cells));
-      for (auto c : cells)
+      for (auto c : incident(rt, v))
         for (int j = 0; j < 4; ++j) {
           const RtVertex w = c->vertex(j);
           if (w != v && !rt.is_infinite(w)) row.push_back(w->info());

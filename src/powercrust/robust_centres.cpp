@@ -38,16 +38,28 @@ Point3 power_vertex(const Kernel::Weighted_point_3& p, const Kernel::Weighted_po
     scale = std::max({scale, std::abs(w->x()), std::abs(w->y()), std::abs(w->z()),
                       std::sqrt(std::max(0.0, w->weight()))});
   {
-    using Interval = CGAL::Interval_nt<>;
-    Interval nx, ny, nz, den;
-    determinants(p, q, r, s, nx, ny, nz, den);
-    if (!CGAL::possibly(den == 0)) {
-      const Interval inv = 1 / (2 * den);
-      const Interval x = p.x() + nx * inv, y = p.y() - ny * inv, z = p.z() + nz * inv;
+    // One switch of the rounding mode for the whole evaluation (Interval_nt<true> switches it
+    // around every operation); the guard restores it before the result is rounded to doubles.
+    using Interval = CGAL::Interval_nt<false>;
+    double lo[3], hi[3];
+    bool usable = false;
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      Interval nx, ny, nz, den;
+      determinants(p, q, r, s, nx, ny, nz, den);
+      if (!CGAL::possibly(den == 0)) {
+        const Interval inv = 1 / (2 * den);
+        const Interval c[3] = {p.x() + nx * inv, p.y() - ny * inv, p.z() + nz * inv};
+        usable = true;
+        for (int k = 0; k < 3; ++k) lo[k] = c[k].inf(), hi[k] = c[k].sup();
+      }
+    }
+    if (usable) {
       const double tolerance = kRelativeWidth * scale;
-      auto tight = [&](const Interval& i) { return i.sup() - i.inf() <= tolerance; };
-      if (tight(x) && tight(y) && tight(z))
-        return Point3(CGAL::to_double(x), CGAL::to_double(y), CGAL::to_double(z));
+      bool tight = true;
+      for (int k = 0; k < 3; ++k) tight = tight && hi[k] - lo[k] <= tolerance;
+      // The interval's midpoint, rounded to nearest (what to_double of the interval gives).
+      if (tight) return Point3((hi[0] + lo[0]) * 0.5, (hi[1] + lo[1]) * 0.5, (hi[2] + lo[2]) * 0.5);
     }
   }
   // Exact determinants, one rounding each: accurate to a few ulps whatever the cancellation.

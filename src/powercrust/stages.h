@@ -8,6 +8,7 @@
 
 #include <CGAL/Bbox_3.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,9 +48,10 @@ struct PoleStage {
   std::size_t welded_poles = 0;
 };
 
-/// Compute Voronoi vertices, poles (welded where balls agree to ~1e-11 diag, ids in sample
-/// order) and the opposite-pole weights.
-PoleStage compute_poles(Delaunay& dt, const std::vector<Point3>& samples, bool keep_cells);
+/// Compute Voronoi vertices, poles (welded where balls agree to ~1e-11 diag, ids in the
+/// samples' spatial order) and the opposite-pole weights. Frees the triangulation as soon as
+/// the poles are chosen.
+PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells);
 
 /// What labeling did beyond setting Pole::label.
 struct LabelingReport {
