@@ -159,7 +159,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"projections_refused", s.projections_refused},
                   {"vertices_welded", s.vertices_welded},
                   {"final_defects_repaired", s.final_defects_repaired},
-                  {"faces_dropped_at_defects", s.faces_dropped_at_defects}};
+                  {"faces_dropped_at_defects", s.faces_dropped_at_defects},
+                  {"orientation_seams", s.orientation_seams},
+                  {"faces_removed_at_seams", s.faces_removed_at_seams}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;
@@ -259,6 +261,13 @@ void register_reconstruct(CLI::App& app) {
                   "sheet (default: clean 2-manifold) or powershape (the paper's raw power shape)")
       ->transform(CLI::CheckedTransformer(extractions, CLI::ignore_case));
   sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
+  sub->add_flag("--orientable", cmd->options.sheet.cut_to_orientable,
+                "The surface is orientable (a scan of a solid): where the sheet comes out non-orientable, remove it within "
+                "--orientable-cut rho of each orientation seam (a hole instead of a cross-cap; reported)");
+  sub->add_option("--orientable-cut", cmd->options.sheet.orientable_cut_rel_rho,
+                  "With --orientable: half-width of the band removed around a seam, in rho")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
   sub->add_flag("--remesh", cmd->use_remesh,

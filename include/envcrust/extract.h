@@ -62,6 +62,13 @@ struct SheetOptions {
   /// times, after the neighbours have moved (a rough, noisy sheet unfolds as its vertices
   /// come down onto the surface). >= 0.
   int projection_retry_rounds = 4;
+  /// For surfaces known to be orientable (scans of solid objects): where the sheet comes out
+  /// non-orientable (it crosses itself where a part is thinner than 2 rho or sampled too
+  /// sparsely, and the cleaning joins the two sides with a twist), remove the faces within
+  /// `orientable_cut_rel_rho` rho (along the mesh) of each orientation seam, leaving a hole
+  /// there instead of a cross-cap. Off by default: a Moebius strip is non-orientable.
+  bool cut_to_orientable = false;
+  double orientable_cut_rel_rho = 1.0;  ///< > 0
 };
 
 /// What extract_sheet did.
@@ -82,6 +89,9 @@ struct SheetStats {
   std::size_t vertices_welded = 0;
   std::size_t final_defects_repaired = 0;
   std::size_t faces_dropped_at_defects = 0;
+  /// SheetOptions::cut_to_orientable: orientation seams found and faces removed around them.
+  std::size_t orientation_seams = 0;
+  std::size_t faces_removed_at_seams = 0;
 };
 
 /// The extracted sheet.

@@ -36,6 +36,7 @@ void validate(const SheetOptions& o) {
   if (!(o.projection_retry_rounds >= 0)) fail("projection_retry_rounds", o.projection_retry_rounds);
   if (!(o.max_face_distance_rel_rho >= 0)) fail("max_face_distance_rel_rho", o.max_face_distance_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
+  if (!(o.orientable_cut_rel_rho > 0)) fail("orientable_cut_rel_rho", o.orientable_cut_rel_rho);
 }
 
 // The envelope radius at surface sample i: its local rho (adaptive) or the one rho.
@@ -159,6 +160,24 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (repair.faces_dropped > 0)
     result.warnings.push_back(std::to_string(repair.faces_dropped) +
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
+  if (options.cut_to_orientable) {
+    const OrientableCutStats cut = cut_to_orientable(sheet, options.orientable_cut_rel_rho * envelope.rho);
+    result.stats.orientation_seams = cut.seams;
+    result.stats.faces_removed_at_seams = cut.faces_removed;
+    if (cut.seams > 0) {
+      // The bands leave crumbs between them and pinholes where they barely touched the sheet.
+      result.stats.components_dropped +=
+          filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
+      if (options.fill_loops_shorter_than_rel_rho > 0)
+        result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+      make_manifold(sheet);
+    }
+    if (cut.seams > 0)
+      result.warnings.push_back("the sheet was non-orientable: " + std::to_string(cut.faces_removed) +
+                                " faces removed around " + std::to_string(cut.seams) + " orientation seam" +
+                                (cut.seams == 1 ? "" : "s") +
+                                (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : ""));
+  }
   result.mesh = std::move(sheet.mesh);
   // The Voronoi polygons come wound as their Delaunay edges happen to run.
   topology::orient_faces(result.mesh);

@@ -76,6 +76,18 @@ struct ManifoldRepairStats {
 /// Run it after every step that moves vertices or changes faces.
 ManifoldRepairStats make_manifold(TaggedMesh& tagged, int max_rounds = 4);
 
+/// What cut_to_orientable did.
+struct OrientableCutStats {
+  std::size_t seams = 0;          ///< connected seams of orientation-reversing edges found
+  std::size_t faces_removed = 0;
+  bool still_non_orientable = false;
+};
+
+/// Remove the faces within `radius` (along mesh edges) of the seams where no consistent
+/// orientation exists, then repair the manifold; repeat up to `max_rounds` times while seams
+/// remain. Leaves the mesh consistently wound (orient_faces).
+OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, int max_rounds = 3);
+
 /// Drop unused vertices (indices remapped).
 void compact_vertices(TaggedMesh& tagged);
 

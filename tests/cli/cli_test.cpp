@@ -229,6 +229,28 @@ TEST_F(CliTest, envelope_writes_samples_with_offset_directions) {
   }
 }
 
+// --orientable cuts the Moebius strip open across its one orientation seam: a disc.
+TEST_F(CliTest, reconstruct_orientable_cuts_the_moebius_strip_into_a_disc) {
+  const auto r = run_envcrust("reconstruct builtin:moebius -n 5000 --orientable -o " + path("m.off") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 1);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_EQ(a["is_orientable"], true);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_EQ(j["sheet"]["orientation_seams"], 1);
+  const auto removed = j["sheet"]["faces_removed_at_seams"].get<std::size_t>();
+  EXPECT_GT(removed, 0u);
+  EXPECT_EQ(j["warnings"][0], "the sheet was non-orientable: " + std::to_string(removed) +
+                                  " faces removed around 1 orientation seam");
+
+  const auto bad = run_envcrust("reconstruct builtin:moebius --orientable --orientable-cut 0 -o " + path("x.ply"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--orientable-cut"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
   const auto r = run_envcrust("reconstruct builtin:cylinder --rho -2 -o " + path("x.ply"));
   EXPECT_EQ(r.exit_code, 2);

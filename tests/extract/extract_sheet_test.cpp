@@ -1,6 +1,7 @@
 // The medial sheet of the envelope of exact samples reproduces each surface's topology and
 // geometry.
 #include "envcrust/analysis.h"
+#include "envcrust/errors.h"
 #include "envcrust/extract.h"
 #include "envcrust/mesh.h"
 #include "envcrust/topology.h"
@@ -237,4 +238,58 @@ TEST(SheetOfSparseSamples, issue_5_keeps_the_sheet_where_rho_is_near_the_sample_
   const auto lost = extract::extract_sheet(env, samples, rho_only);
   std::printf("rho alone: area %.3f\n", mesh::total_area(lost.mesh));
   EXPECT_LT(mesh::total_area(lost.mesh), 2.0);
+}
+
+// SheetOptions::cut_to_orientable: the Moebius strip loses a band across its seam and comes
+// out a disc close to the surface; an orientable sheet comes out exactly as without it.
+TEST(SheetCutToOrientable, turns_the_moebius_strip_into_a_disc) {
+  const auto surface = surfaces::make_builtin("moebius");
+  const auto samples = exact_samples(*surface, 10000);
+  const auto env = envelope::sample_envelope(samples);
+  extract::SheetOptions options;
+  options.cut_to_orientable = true;
+  const auto cut = extract::extract_sheet(env, samples, options);
+  const auto whole = extract::extract_sheet(env, samples);
+  const auto t = topology::analyze_topology(cut.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, 1);
+  EXPECT_EQ(t.boundary_loops.size(), 1u);
+  EXPECT_TRUE(t.is_orientable);
+  EXPECT_EQ(t.misoriented_edges, 0u);
+  EXPECT_EQ(cut.stats.orientation_seams, 1u);
+  // A band about 2 rho wide across a strip whose midline is 2 pi long.
+  const double kept = mesh::total_area(cut.mesh) / mesh::total_area(whole.mesh);
+  EXPECT_LT(kept, 1.0 - 0.5 * env.rho / (2 * 3.141592653589793));
+  EXPECT_GT(kept, 1.0 - 4.0 * env.rho / (2 * 3.141592653589793));
+  const auto report = analyze_against_truth(cut.mesh, *surface, samples);
+  EXPECT_LT(report.distance->relative(report.distance->mesh_to_reference.max), 0.005);
+}
+
+TEST(SheetCutToOrientable, leaves_an_orientable_sheet_as_it_was) {
+  const auto samples = exact_samples(*surfaces::make_builtin("trefoil-ribbon"), 10000);
+  const auto env = envelope::sample_envelope(samples);
+  extract::SheetOptions options;
+  options.cut_to_orientable = true;
+  const auto cut = extract::extract_sheet(env, samples, options);
+  const auto whole = extract::extract_sheet(env, samples);
+  EXPECT_EQ(cut.stats.orientation_seams, 0u);
+  EXPECT_EQ(cut.stats.faces_removed_at_seams, 0u);
+  EXPECT_EQ(cut.mesh.triangles, whole.mesh.triangles);
+  EXPECT_EQ(cut.mesh.vertices, whole.mesh.vertices);
+  EXPECT_TRUE(cut.warnings.empty());
+}
+
+TEST(SheetCutToOrientable, refuses_a_non_positive_band) {
+  const auto samples = exact_samples(*surfaces::make_builtin("moebius"), 2000);
+  const auto env = envelope::sample_envelope(samples);
+  extract::SheetOptions options;
+  options.cut_to_orientable = true;
+  options.orientable_cut_rel_rho = 0;
+  try {
+    extract::extract_sheet(env, samples, options);
+    FAIL() << "expected InvalidOptions";
+  } catch (const InvalidOptions& e) {
+    EXPECT_STREQ(e.what(), "SheetOptions::orientable_cut_rel_rho out of range (got 0)");
+  }
 }
