@@ -3,7 +3,6 @@
 
 #include "envcrust/union_find.h"
 
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <tuple>
@@ -27,21 +26,40 @@ MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t 
     std::uint32_t face;
     std::uint8_t slot;
   };
-  std::vector<HalfEdge> half_edges;
-  half_edges.reserve(3 * g.faces.size());
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f) {
-    for (std::uint8_t k = 0; k < 3; ++k) {
-      Index a = g.faces[f][k];
-      Index b = g.faces[f][(k + 1) % 3];
-      if (a > b) std::swap(a, b);
-      half_edges.push_back({a, b, f, k});
+  // Sorted by (a, b, face, slot) without a comparison sort (it was the largest cost of the
+  // sheet's cleaning, which rebuilds this table a dozen times): a counting sort by a, which
+  // keeps the (face, slot) order of generation, then a stable insertion sort by b within each
+  // vertex's few half-edges.
+  std::vector<std::uint32_t> start(num_vertices + 1, 0);
+  for (const auto& f : g.faces)
+    for (std::uint8_t k = 0; k < 3; ++k) ++start[std::min(f[k], f[(k + 1) % 3]) + 1];
+  for (std::size_t v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  std::vector<HalfEdge> half_edges(3 * g.faces.size());
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::uint32_t f = 0; f < g.faces.size(); ++f)
+      for (std::uint8_t k = 0; k < 3; ++k) {
+        Index a = g.faces[f][k];
+        Index b = g.faces[f][(k + 1) % 3];
+        if (a > b) std::swap(a, b);
+        half_edges[fill[a]++] = {a, b, f, k};
+      }
+  }
+  for (std::size_t v = 0; v < num_vertices; ++v) {
+    if (start[v + 1] - start[v] > 64) {  // a high-degree vertex (a fan over a long hole)
+      std::stable_sort(half_edges.begin() + start[v], half_edges.begin() + start[v + 1],
+                       [](const HalfEdge& x, const HalfEdge& y) { return x.b < y.b; });
+      continue;
+    }
+    for (std::uint32_t i = start[v] + 1; i < start[v + 1]; ++i) {
+      const HalfEdge h = half_edges[i];
+      std::uint32_t j = i;
+      for (; j > start[v] && half_edges[j - 1].b > h.b; --j) half_edges[j] = half_edges[j - 1];
+      half_edges[j] = h;
     }
   }
-  // A total order (every half-edge has its own face and slot): the parallel sort's result is
-  // the sequential one's.
-  tbb::parallel_sort(half_edges.begin(), half_edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return std::tie(x.a, x.b, x.face, x.slot) < std::tie(y.a, y.b, y.face, y.slot);
-  });
+  g.edges.reserve(half_edges.size() / 2 + 1);
+  g.edge_face_begin.reserve(half_edges.size() / 2 + 2);
   g.face_edges.resize(g.faces.size());
   g.edge_faces.reserve(half_edges.size());
   for (std::size_t i = 0; i < half_edges.size();) {
