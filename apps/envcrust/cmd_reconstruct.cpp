@@ -161,7 +161,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"final_defects_repaired", s.final_defects_repaired},
                   {"faces_dropped_at_defects", s.faces_dropped_at_defects},
                   {"orientation_seams", s.orientation_seams},
-                  {"faces_removed_at_seams", s.faces_removed_at_seams}};
+                  {"faces_removed_at_seams", s.faces_removed_at_seams},
+                  {"handle_balls", s.handle_balls},
+                  {"faces_removed_at_handles", s.faces_removed_at_handles}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;
@@ -268,6 +270,11 @@ void register_reconstruct(CLI::App& app) {
                   "With --orientable: half-width of the band removed around a seam, in rho")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  sub->add_option("--cut-handles", cmd->options.sheet.cut_handles_rel_rho,
+                  "Remove every geodesic ball of this radius (in rho) where the result is not a disc once its own "
+                  "holes are capped: handles and cross-caps at thin, sparsely sampled parts (reported; 0: off)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
   sub->add_flag("--remesh", cmd->use_remesh,

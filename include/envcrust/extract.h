@@ -69,6 +69,11 @@ struct SheetOptions {
   /// there instead of a cross-cap. Off by default: a Moebius strip is non-orientable.
   bool cut_to_orientable = false;
   double orientable_cut_rel_rho = 1.0;  ///< > 0
+  /// For surfaces that are discs at this scale (in rho) everywhere but at their holes: remove
+  /// every geodesic ball of this radius that is not a disc once the sheet's own holes inside it
+  /// are capped (handles and cross-caps where a thin part was sampled too sparsely; also any
+  /// true tube thinner than the ball). 0: off (default). >= 0.
+  double cut_handles_rel_rho = 0.0;
 };
 
 /// What extract_sheet did.
@@ -92,6 +97,9 @@ struct SheetStats {
   /// SheetOptions::cut_to_orientable: orientation seams found and faces removed around them.
   std::size_t orientation_seams = 0;
   std::size_t faces_removed_at_seams = 0;
+  /// SheetOptions::cut_handles_rel_rho: balls that were not discs, and the faces removed.
+  std::size_t handle_balls = 0;
+  std::size_t faces_removed_at_handles = 0;
 };
 
 /// The extracted sheet.

@@ -37,6 +37,7 @@ void validate(const SheetOptions& o) {
   if (!(o.max_face_distance_rel_rho >= 0)) fail("max_face_distance_rel_rho", o.max_face_distance_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
   if (!(o.orientable_cut_rel_rho > 0)) fail("orientable_cut_rel_rho", o.orientable_cut_rel_rho);
+  if (!(o.cut_handles_rel_rho >= 0)) fail("cut_handles_rel_rho", o.cut_handles_rel_rho);
 }
 
 // The envelope radius at surface sample i: its local rho (adaptive) or the one rho.
@@ -177,6 +178,20 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                                 " faces removed around " + std::to_string(cut.seams) + " orientation seam" +
                                 (cut.seams == 1 ? "" : "s") +
                                 (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : ""));
+  }
+  if (options.cut_handles_rel_rho > 0) {
+    const HandleCutStats cut = cut_local_handles(sheet, options.cut_handles_rel_rho * envelope.rho);
+    result.stats.handle_balls = cut.balls;
+    result.stats.faces_removed_at_handles = cut.faces_removed;
+    if (cut.balls > 0) {
+      result.stats.components_dropped +=
+          filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
+      make_manifold(sheet);
+      std::ostringstream w;
+      w << "the sheet was not a disc in " << cut.balls << " ball" << (cut.balls == 1 ? "" : "s") << " of radius "
+        << options.cut_handles_rel_rho << " rho: " << cut.faces_removed << " faces removed there";
+      result.warnings.push_back(w.str());
+    }
   }
   result.mesh = std::move(sheet.mesh);
   // The Voronoi polygons come wound as their Delaunay edges happen to run.

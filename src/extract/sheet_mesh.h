@@ -88,6 +88,19 @@ struct OrientableCutStats {
 /// remain. Leaves the mesh consistently wound (orient_faces).
 OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, int max_rounds = 3);
 
+/// What cut_local_handles did.
+struct HandleCutStats {
+  std::size_t balls = 0;  ///< seed balls that were not discs
+  std::size_t faces_removed = 0;
+};
+
+/// Remove the places where the sheet is not a disc at scale `radius`: around seeds spread
+/// `radius` / 2 apart, the faces within `radius` (along the mesh) form a disc or half-disc,
+/// once every hole of the sheet lying wholly inside is capped; where they do not (a handle, a
+/// cross-cap, or a tube thinner than the ball), all of them are removed. Then repairs the
+/// manifold.
+HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius);
+
 /// Drop unused vertices (indices remapped).
 void compact_vertices(TaggedMesh& tagged);
 

@@ -249,6 +249,10 @@ TEST_F(CliTest, reconstruct_orientable_cuts_the_moebius_strip_into_a_disc) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--orientable-cut"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(path("x.ply")));
+  const auto bad_handles = run_envcrust("reconstruct builtin:moebius --cut-handles -1 -o " + path("x.ply"));
+  EXPECT_EQ(bad_handles.exit_code, 2);
+  EXPECT_NE(bad_handles.err.find("--cut-handles"), std::string::npos) << bad_handles.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
 TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {

@@ -266,15 +266,20 @@ TEST(SheetCutToOrientable, turns_the_moebius_strip_into_a_disc) {
   EXPECT_LT(report.distance->relative(report.distance->mesh_to_reference.max), 0.005);
 }
 
+// ... and so does cut_handles_rel_rho: every ball of 2.4 rho on the trefoil ribbon's sheet is
+// a disc or a half-disc.
 TEST(SheetCutToOrientable, leaves_an_orientable_sheet_as_it_was) {
   const auto samples = exact_samples(*surfaces::make_builtin("trefoil-ribbon"), 10000);
   const auto env = envelope::sample_envelope(samples);
   extract::SheetOptions options;
   options.cut_to_orientable = true;
+  options.cut_handles_rel_rho = 2.4;
   const auto cut = extract::extract_sheet(env, samples, options);
   const auto whole = extract::extract_sheet(env, samples);
   EXPECT_EQ(cut.stats.orientation_seams, 0u);
   EXPECT_EQ(cut.stats.faces_removed_at_seams, 0u);
+  EXPECT_EQ(cut.stats.handle_balls, 0u);
+  EXPECT_EQ(cut.stats.faces_removed_at_handles, 0u);
   EXPECT_EQ(cut.mesh.triangles, whole.mesh.triangles);
   EXPECT_EQ(cut.mesh.vertices, whole.mesh.vertices);
   EXPECT_TRUE(cut.warnings.empty());

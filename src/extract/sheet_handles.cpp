@@ -1,0 +1,235 @@
+// Cut out the places where the sheet is not a disc at a given scale (SheetOptions::cut_handles_rel_rho).
+#include "sheet_mesh.h"
+
+#include "envcrust/mesh_graph.h"
+#include "envcrust/union_find.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+
+namespace envcrust::extract {
+namespace {
+
+struct Adjacency {
+  std::vector<std::size_t> begin;  ///< per vertex, into neighbours
+  std::vector<std::pair<Index, double>> neighbours;
+  std::vector<std::size_t> face_begin;  ///< per vertex, into faces
+  std::vector<std::uint32_t> faces;
+};
+
+Adjacency adjacency(const TriangleMesh& mesh, const topology::MeshGraph& g) {
+  Adjacency a;
+  const std::size_t n = mesh.vertices.size();
+  a.begin.assign(n + 1, 0);
+  for (const auto& [u, v] : g.edges) ++a.begin[u + 1], ++a.begin[v + 1];
+  for (std::size_t v = 0; v < n; ++v) a.begin[v + 1] += a.begin[v];
+  a.neighbours.resize(a.begin[n]);
+  std::vector<std::size_t> fill(a.begin.begin(), a.begin.end() - 1);
+  for (const auto& [u, v] : g.edges) {
+    const double length = std::sqrt(CGAL::squared_distance(mesh.vertices[u], mesh.vertices[v]));
+    a.neighbours[fill[u]++] = {v, length};
+    a.neighbours[fill[v]++] = {u, length};
+  }
+  a.face_begin.assign(n + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (const Index v : t) ++a.face_begin[v + 1];
+  for (std::size_t v = 0; v < n; ++v) a.face_begin[v + 1] += a.face_begin[v];
+  a.faces.resize(a.face_begin[n]);
+  fill.assign(a.face_begin.begin(), a.face_begin.end() - 1);
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f)
+    for (const Index v : mesh.triangles[f]) a.faces[fill[v]++] = f;
+  return a;
+}
+
+// Seeds: one vertex per occupied cell of a grid of side `cell`, so every vertex lies within
+// sqrt(3) cell (in space, hence about as far along the sheet) of a seed.
+std::vector<Index> grid_seeds(const TriangleMesh& mesh, double cell) {
+  std::unordered_map<std::uint64_t, Index> first;
+  auto coord = [&](double x) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(x / cell)) & 0x1fffff); };
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& t : mesh.triangles)
+    for (const Index v : t) used[v] = 1;
+  for (Index v = 0; v < mesh.vertices.size(); ++v) {
+    if (!used[v]) continue;
+    const Point3& p = mesh.vertices[v];
+    first.emplace(coord(p.x()) << 42 | coord(p.y()) << 21 | coord(p.z()), v);
+  }
+  std::vector<Index> seeds;
+  seeds.reserve(first.size());
+  for (const auto& [key, v] : first) seeds.push_back(v);
+  std::sort(seeds.begin(), seeds.end());
+  return seeds;
+}
+
+struct BallScratch {
+  std::vector<double> distance;
+  std::vector<Index> reached;
+  std::vector<std::uint32_t> faces;
+  std::vector<std::pair<Index, Index>> edges;
+};
+
+// The vertices within `radius` of the seed along mesh edges (scratch.reached, with distances).
+void grow_ball(const Adjacency& a, Index seed, double radius, BallScratch& s) {
+  for (const Index v : s.reached) s.distance[v] = std::numeric_limits<double>::infinity();
+  s.reached.clear();
+  using Item = std::pair<double, Index>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  s.distance[seed] = 0;
+  s.reached.push_back(seed);
+  queue.emplace(0.0, seed);
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > s.distance[v]) continue;
+    for (std::size_t k = a.begin[v]; k < a.begin[v + 1]; ++k) {
+      const auto [w, length] = a.neighbours[k];
+      if (d + length > radius || d + length >= s.distance[w]) continue;
+      if (s.distance[w] == std::numeric_limits<double>::infinity()) s.reached.push_back(w);
+      s.distance[w] = d + length;
+      queue.emplace(d + length, w);
+    }
+  }
+}
+
+// Whether the faces of the ball (all three corners inside) fail to be discs: their Euler
+// characteristic, with each hole of the sheet that lies wholly inside counted as capped, is
+// below their number of components. A disc or half-disc (at the sheet's border) passes; a
+// handle, a cross-cap or a tube narrower than the ball fails.
+bool ball_is_not_a_disc(const TriangleMesh& mesh, const topology::MeshGraph& g, const Adjacency& a,
+                        const std::vector<char>& on_border, BallScratch& s) {
+  const double inf = std::numeric_limits<double>::infinity();
+  s.faces.clear();
+  for (const Index v : s.reached)
+    for (std::size_t k = a.face_begin[v]; k < a.face_begin[v + 1]; ++k) {
+      const std::uint32_t f = a.faces[k];
+      const auto& t = mesh.triangles[f];
+      // Each face once: from its inside corner of smallest index.
+      Index first = std::numeric_limits<Index>::max();
+      bool inside = true;
+      for (const Index c : t) {
+        inside = inside && s.distance[c] != inf;
+        first = std::min(first, c);
+      }
+      if (inside && first == v) s.faces.push_back(f);
+    }
+  if (s.faces.empty()) return false;
+  s.edges.clear();
+  for (const std::uint32_t f : s.faces)
+    for (int k = 0; k < 3; ++k) {
+      const Index u = mesh.triangles[f][k], w = mesh.triangles[f][(k + 1) % 3];
+      s.edges.emplace_back(std::min(u, w), std::max(u, w));
+    }
+  std::sort(s.edges.begin(), s.edges.end());
+  const auto edge_count = static_cast<long>(std::unique(s.edges.begin(), s.edges.end()) - s.edges.begin());
+  s.edges.resize(static_cast<std::size_t>(edge_count));
+  // Vertices used by the faces, components of the faces (through shared vertices, which is
+  // what a fan of faces around a vertex joins), and the sheet's border edges among them.
+  std::unordered_map<Index, Index> local;
+  for (const std::uint32_t f : s.faces)
+    for (const Index c : mesh.triangles[f]) local.emplace(c, static_cast<Index>(local.size()));
+  topology::UnionFind components(local.size());
+  for (const std::uint32_t f : s.faces) {
+    const auto& t = mesh.triangles[f];
+    components.unite(local[t[0]], local[t[1]]);
+    components.unite(local[t[0]], local[t[2]]);
+  }
+  std::size_t component_count = 0;
+  for (const auto& [v, i] : local) component_count += components.find(i) == i;
+  // Holes of the sheet wholly inside: cycles of border edges among the ball's edges. Each
+  // connected set of border edges whose vertices all have two border edges in the ball is a
+  // closed loop.
+  topology::UnionFind holes(local.size());
+  std::unordered_map<Index, int> border_degree;
+  for (const auto& [u, w] : s.edges) {
+    if (!(on_border[u] && on_border[w])) continue;
+    // A border edge of the sheet: one face in the whole mesh.
+    const auto it = std::lower_bound(g.edges.begin(), g.edges.end(), std::make_pair(u, w));
+    if (it == g.edges.end() || *it != std::make_pair(u, w)) continue;
+    if (g.face_count_of_edge(static_cast<std::size_t>(it - g.edges.begin())) != 1) continue;
+    holes.unite(local[u], local[w]);
+    ++border_degree[u], ++border_degree[w];
+  }
+  std::unordered_map<Index, bool> closed;  // hole root -> every vertex has two border edges
+  for (const auto& [v, degree] : border_degree) {
+    const Index root = holes.find(local[v]);
+    auto [it, fresh] = closed.emplace(root, true);
+    it->second = it->second && degree == 2;
+  }
+  long capped = 0;
+  for (const auto& [root, is_closed] : closed) capped += is_closed;
+  const long chi = static_cast<long>(local.size()) - edge_count + static_cast<long>(s.faces.size()) + capped;
+  return chi < static_cast<long>(component_count);
+}
+
+}  // namespace
+
+HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
+  HandleCutStats stats;
+  TriangleMesh& mesh = tagged.mesh;
+  if (mesh.triangles.empty()) return stats;
+  const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
+  const Adjacency a = adjacency(mesh, g);
+  std::vector<char> on_border(mesh.vertices.size(), 0);
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    if (g.face_count_of_edge(e) == 1) on_border[g.edges[e].first] = on_border[g.edges[e].second] = 1;
+  // Seeds half a radius apart: a defect smaller than about half the radius lies wholly
+  // inside the ball of some seed.
+  const std::vector<Index> seeds = grid_seeds(mesh, 0.5 * radius / std::sqrt(3.0));
+  std::vector<char> flagged(seeds.size(), 0);
+  tbb::enumerable_thread_specific<BallScratch> scratch([&] {
+    BallScratch s;
+    s.distance.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
+    return s;
+  });
+  tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
+    BallScratch& s = scratch.local();
+    grow_ball(a, seeds[i], radius, s);
+    flagged[i] = ball_is_not_a_disc(mesh, g, a, on_border, s);
+  });
+  // Each flagged ball shrinks to the smallest radius at which it is still not a disc (the
+  // defect then lies on its rim), found by bisection; the faces of that ball are removed.
+  std::vector<double> smallest(seeds.size(), 0.0);
+  tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
+    if (!flagged[i]) return;
+    BallScratch& s = scratch.local();
+    double lo = 0, hi = radius;
+    for (int step = 0; step < 6; ++step) {
+      const double mid = 0.5 * (lo + hi);
+      grow_ball(a, seeds[i], mid, s);
+      (ball_is_not_a_disc(mesh, g, a, on_border, s) ? hi : lo) = mid;
+    }
+    smallest[i] = hi;
+  });
+  std::vector<char> remove(mesh.triangles.size(), 0);
+  BallScratch s;
+  s.distance.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    if (!flagged[i]) continue;
+    ++stats.balls;
+    grow_ball(a, seeds[i], smallest[i], s);
+    for (const Index v : s.reached)
+      for (std::size_t k = a.face_begin[v]; k < a.face_begin[v + 1]; ++k) remove[a.faces[k]] = 1;
+  }
+  if (stats.balls == 0) return stats;
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (remove[f]) continue;
+    mesh.triangles[kept] = mesh.triangles[f];
+    tagged.face_dot[kept] = tagged.face_dot[f];
+    ++kept;
+  }
+  stats.faces_removed = mesh.triangles.size() - kept;
+  mesh.triangles.resize(kept);
+  tagged.face_dot.resize(kept);
+  make_manifold(tagged);
+  return stats;
+}
+
+}  // namespace envcrust::extract

@@ -1,0 +1,106 @@
+// cut_local_handles on a plane with a handle built here: the balls around the handle are not
+// discs and go; the plane far from it stays; a plane without a handle (but with a small hole
+// of its own) is left as it was.
+#include "envcrust/topology.h"
+
+#include "sheet_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+using namespace envcrust;
+using namespace envcrust::extract;
+
+namespace {
+
+// A 60 x 60 grid of 0.1 cells over [0, 6]^2, with the 4x4-cell squares
+// at cells [18, 22) x [28, 32) and [38, 42) x [28, 32) cut out; with `handle`, a tube of 16
+// rings joins the two square holes' rims over the plane (the rims' vertices reused).
+TaggedMesh plane_with_holes(bool handle) {
+  constexpr int n = 60;
+  constexpr double h = 0.1;
+  TaggedMesh t;
+  auto id = [](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) t.mesh.vertices.emplace_back(i * h, j * h, 0.0);
+  auto in_hole = [](int i, int j) { return j >= 28 && j < 32 && ((i >= 18 && i < 22) || (i >= 38 && i < 42)); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (in_hole(i, j)) continue;
+      t.mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      t.mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  if (handle) {
+    // The rim of the square hole starting at cell (i0, 28), counter-clockwise: 16 vertices.
+    auto rim = [&](int i0) {
+      std::vector<Index> r;
+      for (int k = 0; k < 4; ++k) r.push_back(id(i0 + k, 28));
+      for (int k = 0; k < 4; ++k) r.push_back(id(i0 + 4, 28 + k));
+      for (int k = 0; k < 4; ++k) r.push_back(id(i0 + 4 - k, 32));
+      for (int k = 0; k < 4; ++k) r.push_back(id(i0, 32 - k));
+      return r;
+    };
+    const std::vector<Index> a = rim(18), b = rim(38);
+    constexpr int rings = 16;
+    std::vector<std::vector<Index>> ring(rings + 1);
+    ring[0] = a;
+    ring[rings] = b;
+    for (int r = 1; r < rings; ++r) {
+      const double s = static_cast<double>(r) / rings;
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        const Point3 p = t.mesh.vertices[a[k]], q = t.mesh.vertices[b[k]];
+        ring[r].push_back(static_cast<Index>(t.mesh.vertices.size()));
+        t.mesh.vertices.emplace_back(p.x() + s * (q.x() - p.x()), p.y() + s * (q.y() - p.y()),
+                                     1.5 * std::sin(3.141592653589793 * s));
+      }
+    }
+    for (int r = 0; r < rings; ++r)
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        const std::size_t k1 = (k + 1) % a.size();
+        t.mesh.triangles.push_back({ring[r][k], ring[r + 1][k], ring[r + 1][k1]});
+        t.mesh.triangles.push_back({ring[r][k], ring[r + 1][k1], ring[r][k1]});
+      }
+  }
+  t.face_dot.assign(t.mesh.triangles.size(), -1.0);
+  return t;
+}
+
+}  // namespace
+
+TEST(CutLocalHandles, the_test_mesh_has_one_handle) {
+  const auto t = topology::analyze_topology(plane_with_holes(true).mesh);
+  ASSERT_TRUE(t.is_manifold());
+  ASSERT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, -1);  // genus 1, one border loop (the plane's rim)
+  EXPECT_EQ(t.boundary_loops.size(), 1u);
+}
+
+TEST(CutLocalHandles, removes_the_balls_around_the_handle_and_keeps_the_plane) {
+  TaggedMesh m = plane_with_holes(true);
+  const std::size_t before = m.mesh.triangles.size();
+  const HandleCutStats stats = cut_local_handles(m, 0.8);
+  EXPECT_GT(stats.balls, 0u);
+  EXPECT_EQ(m.face_dot.size(), m.mesh.triangles.size());
+  const auto t = topology::analyze_topology(m.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  for (const auto& c : t.components) {
+    ASSERT_TRUE(c.genus.has_value());
+    EXPECT_EQ(*c.genus, 0) << c.faces;
+  }
+  // Only faces near the handle go: the plane's corners stay, and most of the plane.
+  EXPECT_LT(before - m.mesh.triangles.size(), before / 2);
+  std::size_t near_corner = 0;
+  for (const auto& f : m.mesh.triangles) near_corner += m.mesh.vertices[f[0]].x() < 1.0 && m.mesh.vertices[f[0]].y() < 1.0;
+  EXPECT_EQ(near_corner, 200u);  // the 10 x 10 cells of [0, 1]^2, two triangles each
+}
+
+TEST(CutLocalHandles, keeps_a_plane_whose_small_holes_lie_inside_the_balls) {
+  TaggedMesh m = plane_with_holes(false);
+  const TaggedMesh original = m;
+  const HandleCutStats stats = cut_local_handles(m, 0.8);  // each 0.4-wide hole fits in a ball
+  EXPECT_EQ(stats.balls, 0u);
+  EXPECT_EQ(stats.faces_removed, 0u);
+  EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
+}
