@@ -161,32 +161,33 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (repair.faces_dropped > 0)
     result.warnings.push_back(std::to_string(repair.faces_dropped) +
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
+  // After a cut: the removed bands or balls leave crumbs between them (dropped) and, around
+  // seams, pinholes where a band barely touched the sheet (filled when `fill`).
+  auto tidy_after_cut = [&](bool fill) {
+    result.stats.components_dropped +=
+        filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
+    if (fill && options.fill_loops_shorter_than_rel_rho > 0)
+      result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+    make_manifold(sheet);
+  };
   if (options.cut_to_orientable) {
     const OrientableCutStats cut = cut_to_orientable(sheet, options.orientable_cut_rel_rho * envelope.rho);
     result.stats.orientation_seams = cut.seams;
     result.stats.faces_removed_at_seams = cut.faces_removed;
     if (cut.seams > 0) {
-      // The bands leave crumbs between them and pinholes where they barely touched the sheet.
-      result.stats.components_dropped +=
-          filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
-      if (options.fill_loops_shorter_than_rel_rho > 0)
-        result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
-      make_manifold(sheet);
-    }
-    if (cut.seams > 0)
+      tidy_after_cut(true);
       result.warnings.push_back("the sheet was non-orientable: " + std::to_string(cut.faces_removed) +
                                 " faces removed around " + std::to_string(cut.seams) + " orientation seam" +
                                 (cut.seams == 1 ? "" : "s") +
                                 (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : ""));
+    }
   }
   if (options.cut_handles_rel_rho > 0) {
     const HandleCutStats cut = cut_local_handles(sheet, options.cut_handles_rel_rho * envelope.rho);
     result.stats.handle_balls = cut.balls;
     result.stats.faces_removed_at_handles = cut.faces_removed;
     if (cut.balls > 0) {
-      result.stats.components_dropped +=
-          filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
-      make_manifold(sheet);
+      tidy_after_cut(false);  // a fan over a hole left by a handle could close it again
       std::ostringstream w;
       w << "the sheet was not a disc in " << cut.balls << " ball" << (cut.balls == 1 ? "" : "s") << " of radius "
         << options.cut_handles_rel_rho << " rho: " << cut.faces_removed << " faces removed there";

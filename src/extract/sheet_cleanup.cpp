@@ -18,9 +18,8 @@
 #include <numeric>
 
 namespace envcrust::extract {
-namespace {
 
-void remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
+std::size_t remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
   std::size_t kept = 0;
   for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
     if (remove[f]) continue;
@@ -28,9 +27,13 @@ void remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
     t.face_dot[kept] = t.face_dot[f];
     ++kept;
   }
+  const std::size_t removed = t.mesh.triangles.size() - kept;
   t.mesh.triangles.resize(kept);
   t.face_dot.resize(kept);
+  return removed;
 }
+
+namespace {
 
 double face_area(const TriangleMesh& m, const std::array<Index, 3>& f) {
   return std::sqrt(Kernel::Triangle_3(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]).squared_area());

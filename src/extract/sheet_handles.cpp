@@ -218,16 +218,7 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
       for (std::size_t k = a.face_begin[v]; k < a.face_begin[v + 1]; ++k) remove[a.faces[k]] = 1;
   }
   if (stats.balls == 0) return stats;
-  std::size_t kept = 0;
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (remove[f]) continue;
-    mesh.triangles[kept] = mesh.triangles[f];
-    tagged.face_dot[kept] = tagged.face_dot[f];
-    ++kept;
-  }
-  stats.faces_removed = mesh.triangles.size() - kept;
-  mesh.triangles.resize(kept);
-  tagged.face_dot.resize(kept);
+  stats.faces_removed = remove_faces(tagged, remove);
   make_manifold(tagged);
   return stats;
 }

@@ -103,18 +103,7 @@ ManifoldRepairStats make_manifold(TaggedMesh& t, int max_rounds) {
   // left (each pass removes at least one face, so this ends).
   std::vector<char> remove;
   while (!find_defects(t.mesh, &remove).empty()) {
-    std::size_t kept = 0;
-    for (std::size_t f = 0; f < t.mesh.triangles.size(); ++f) {
-      if (remove[f]) {
-        ++stats.faces_dropped;
-        continue;
-      }
-      t.mesh.triangles[kept] = t.mesh.triangles[f];
-      t.face_dot[kept] = t.face_dot[f];
-      ++kept;
-    }
-    t.mesh.triangles.resize(kept);
-    t.face_dot.resize(kept);
+    stats.faces_dropped += remove_faces(t, remove);
     weld();
   }
   compact_vertices(t);

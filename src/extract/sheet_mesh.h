@@ -21,6 +21,9 @@ struct TaggedMesh {
 /// centroid (a new vertex), so non-planar polygons stay close to the sheet.
 TaggedMesh triangulate_sheet(const RawSheet& sheet);
 
+/// Remove the faces f with remove[f] (tags kept aligned). Returns the number removed.
+std::size_t remove_faces(TaggedMesh& tagged, const std::vector<char>& remove);
+
 /// Remove duplicate faces; at an edge with >= 3 faces keep the two from the most opposite
 /// Delaunay edges (smallest u_p . u_q). Returns the number of faces removed.
 std::size_t resolve_non_manifold_edges(TaggedMesh& tagged);

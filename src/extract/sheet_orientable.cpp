@@ -84,17 +84,10 @@ OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, int max_
     if (seams.empty()) return stats;
     if (round == 0) stats.seams = count_seams(g, seams, mesh.vertices.size());
     const std::vector<double> distance = distance_from_seams(mesh, g, seams, radius);
-    std::size_t kept = 0;
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-      const auto& t = mesh.triangles[f];
-      if (distance[t[0]] <= radius || distance[t[1]] <= radius || distance[t[2]] <= radius) continue;
-      mesh.triangles[kept] = t;
-      tagged.face_dot[kept] = tagged.face_dot[f];
-      ++kept;
-    }
-    stats.faces_removed += mesh.triangles.size() - kept;
-    mesh.triangles.resize(kept);
-    tagged.face_dot.resize(kept);
+    std::vector<char> remove(mesh.triangles.size(), 0);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (const Index v : mesh.triangles[f]) remove[f] = remove[f] || distance[v] <= radius;
+    stats.faces_removed += remove_faces(tagged, remove);
     // Removing a band can pinch vertices where it touched the border.
     make_manifold(tagged);
   }
