@@ -188,9 +188,14 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
     s.distance.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
     return s;
   });
+  // A ball that is not a disc is confirmed on the ball three times as large: around a finger
+  // thinner than the ball (a toe), the ball is an annulus but the larger one takes in the
+  // fingertip and is a disc again; a handle or a cross-cap stays in any larger ball.
   tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
     BallScratch& s = scratch.local();
     grow_ball(a, seeds[i], radius, s);
+    if (!ball_is_not_a_disc(mesh, g, a, on_border, s)) return;
+    grow_ball(a, seeds[i], 3 * radius, s);
     flagged[i] = ball_is_not_a_disc(mesh, g, a, on_border, s);
   });
   // Each flagged ball shrinks to the smallest radius at which it is still not a disc (the

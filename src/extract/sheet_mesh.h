@@ -100,8 +100,10 @@ struct HandleCutStats {
 /// Remove the places where the sheet is not a disc at scale `radius`: around seeds spread
 /// `radius` / 2 apart, the faces within `radius` (along the mesh) form a disc or half-disc,
 /// once every hole of the sheet lying wholly inside is capped; where they do not (a handle, a
-/// cross-cap, or a tube thinner than the ball), all of them are removed. Then repairs the
-/// manifold.
+/// cross-cap, or a tube thinner than the ball) and the ball of three times the radius is not a
+/// disc either (around a finger thinner than the ball but shorter than about twice its radius
+/// it is: it takes in the fingertip), the faces of the smallest ball that is not a disc are
+/// removed. Then repairs the manifold.
 HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius);
 
 /// Drop unused vertices (indices remapped).

@@ -67,6 +67,46 @@ TaggedMesh plane_with_holes(bool handle) {
   return t;
 }
 
+// The same plane with one 2 x 2-cell hole at cells [29, 31) x [29, 31) and a finger on its rim:
+// a square tube of 8 rings 0.1 apart rising to z 0.7, capped by a fan to an apex at z 0.8.
+// A disc, like a toe: thinner than the balls below, but shorter than twice their radius.
+TaggedMesh plane_with_a_finger() {
+  constexpr int n = 60;
+  constexpr double h = 0.1;
+  TaggedMesh t;
+  auto id = [](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) t.mesh.vertices.emplace_back(i * h, j * h, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (i >= 29 && i < 31 && j >= 29 && j < 31) continue;
+      t.mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      t.mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  const std::vector<Index> rim = {id(29, 29), id(30, 29), id(31, 29), id(31, 30),
+                                  id(31, 31), id(30, 31), id(29, 31), id(29, 30)};
+  std::vector<Index> below = rim;
+  for (int r = 1; r <= 7; ++r) {
+    std::vector<Index> ring;
+    for (const Index v : rim) {
+      ring.push_back(static_cast<Index>(t.mesh.vertices.size()));
+      const Point3 p = t.mesh.vertices[v];
+      t.mesh.vertices.emplace_back(p.x(), p.y(), r * h);
+    }
+    for (std::size_t k = 0; k < rim.size(); ++k) {
+      const std::size_t k1 = (k + 1) % rim.size();
+      t.mesh.triangles.push_back({below[k], below[k1], ring[k1]});
+      t.mesh.triangles.push_back({below[k], ring[k1], ring[k]});
+    }
+    below = ring;
+  }
+  const auto apex = static_cast<Index>(t.mesh.vertices.size());
+  t.mesh.vertices.emplace_back(3.0, 3.0, 0.8);
+  for (std::size_t k = 0; k < rim.size(); ++k) t.mesh.triangles.push_back({below[k], below[(k + 1) % rim.size()], apex});
+  t.face_dot.assign(t.mesh.triangles.size(), -1.0);
+  return t;
+}
+
 }  // namespace
 
 TEST(CutLocalHandles, the_test_mesh_has_one_handle) {
@@ -102,5 +142,18 @@ TEST(CutLocalHandles, keeps_a_plane_whose_small_holes_lie_inside_the_balls) {
   const HandleCutStats stats = cut_local_handles(m, 0.8);  // each 0.4-wide hole fits in a ball
   EXPECT_EQ(stats.balls, 0u);
   EXPECT_EQ(stats.faces_removed, 0u);
+  EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
+}
+
+// Balls of radius 0.5 around the finger's side wrap around it (its girth is 0.8): annuli. The
+// balls of radius 1.5 take in the fingertip and are discs, so nothing is removed.
+TEST(CutLocalHandles, keeps_a_finger_thinner_than_the_balls) {
+  TaggedMesh m = plane_with_a_finger();
+  const auto t = topology::analyze_topology(m.mesh);
+  ASSERT_TRUE(t.is_manifold());
+  ASSERT_EQ(t.euler_characteristic, 1);  // a disc: the plane, its hole closed by the finger
+  const TaggedMesh original = m;
+  const HandleCutStats stats = cut_local_handles(m, 0.5);
+  EXPECT_EQ(stats.balls, 0u);
   EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
 }
