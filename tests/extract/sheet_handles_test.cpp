@@ -15,23 +15,32 @@ using namespace envcrust::extract;
 
 namespace {
 
-// A 60 x 60 grid of 0.1 cells over [0, 6]^2, with the 4x4-cell squares
-// at cells [18, 22) x [28, 32) and [38, 42) x [28, 32) cut out; with `handle`, a tube of 16
-// rings joins the two square holes' rims over the plane (the rims' vertices reused).
-TaggedMesh plane_with_holes(bool handle) {
+Index grid_id(int i, int j) { return static_cast<Index>(j * 61 + i); }
+
+// A 60 x 60 grid of 0.1 cells over [0, 6]^2 in z = 0, without the cells where `skip(i, j)`.
+template <class Skip>
+TaggedMesh grid_plane(Skip skip) {
   constexpr int n = 60;
   constexpr double h = 0.1;
   TaggedMesh t;
-  auto id = [](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) t.mesh.vertices.emplace_back(i * h, j * h, 0.0);
-  auto in_hole = [](int i, int j) { return j >= 28 && j < 32 && ((i >= 18 && i < 22) || (i >= 38 && i < 42)); };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      if (in_hole(i, j)) continue;
-      t.mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      t.mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      if (skip(i, j)) continue;
+      t.mesh.triangles.push_back({grid_id(i, j), grid_id(i + 1, j), grid_id(i + 1, j + 1)});
+      t.mesh.triangles.push_back({grid_id(i, j), grid_id(i + 1, j + 1), grid_id(i, j + 1)});
     }
+  return t;
+}
+
+// The grid plane with the 4 x 4-cell squares at cells [18, 22) x [28, 32) and [38, 42) x
+// [28, 32) cut out; with `handle`, a tube of 16 rings joins the two square holes' rims over
+// the plane (the rims' vertices reused).
+TaggedMesh plane_with_holes(bool handle) {
+  TaggedMesh t =
+      grid_plane([](int i, int j) { return j >= 28 && j < 32 && ((i >= 18 && i < 22) || (i >= 38 && i < 42)); });
+  const auto id = grid_id;
   if (handle) {
     // The rim of the square hole starting at cell (i0, 28), counter-clockwise: 16 vertices.
     auto rim = [&](int i0) {
@@ -67,22 +76,13 @@ TaggedMesh plane_with_holes(bool handle) {
   return t;
 }
 
-// The same plane with one 2 x 2-cell hole at cells [29, 31) x [29, 31) and a finger on its rim:
+// The grid plane with one 2 x 2-cell hole at cells [29, 31) x [29, 31) and a finger on its rim:
 // a square tube of 8 rings 0.1 apart rising to z 0.7, capped by a fan to an apex at z 0.8.
 // A disc, like a toe: thinner than the balls below, but shorter than twice their radius.
 TaggedMesh plane_with_a_finger() {
-  constexpr int n = 60;
   constexpr double h = 0.1;
-  TaggedMesh t;
-  auto id = [](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) t.mesh.vertices.emplace_back(i * h, j * h, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      if (i >= 29 && i < 31 && j >= 29 && j < 31) continue;
-      t.mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      t.mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
+  TaggedMesh t = grid_plane([](int i, int j) { return i >= 29 && i < 31 && j >= 29 && j < 31; });
+  const auto id = grid_id;
   const std::vector<Index> rim = {id(29, 29), id(30, 29), id(31, 29), id(31, 30),
                                   id(31, 31), id(30, 31), id(29, 31), id(29, 30)};
   std::vector<Index> below = rim;
