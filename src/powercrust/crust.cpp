@@ -53,7 +53,7 @@ void collect_polygons(const PowerDiagram& diagram, const std::vector<Pole>& pole
   const RtVertex v = diagram.vertex_of_pole[p];
   // One representative cell per Out neighbour.
   std::vector<std::pair<Index, RtCell>> edges;
-  for (RtCell c : incident(rt, v))
+  for (RtCell c : incident(v))
     for (int j = 0; j < 4; ++j) {
       const RtVertex w = c->vertex(j);
       if (w != v && !rt.is_infinite(w) && poles[w->info()].label == PoleLabel::Out)

@@ -18,8 +18,7 @@ class IncidentCells {
   using Vertex = typename Triangulation::Vertex_handle;
 
   /// The finite and infinite cells incident to v, in walk order (valid until the next call).
-  const std::vector<Cell>& operator()(const Triangulation& tr, Vertex v) {
-    (void)tr;
+  const std::vector<Cell>& operator()(Vertex v) {
     cells_.clear();
     next_generation();
     const Cell start = v->cell();

@@ -177,8 +177,8 @@ std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n) {
   return chosen;
 }
 
-// For each choice k = 2 * j + side (j: position in the visiting order), the first choice of the same cell: poles are then
-// numbered in sample order (p+ before p-) whatever the cells' addresses.
+// For each choice k = 2 j + side, the choice of sample order[j], the first choice of the same
+// cell: poles are then numbered in that order (p+ before p-) whatever the cells' addresses.
 std::vector<std::size_t> first_choice_of_cell(const std::vector<PoleChoice>& chosen,
                                               const std::vector<std::size_t>& order) {
   std::vector<std::pair<const void*, std::size_t>> by_cell(2 * chosen.size());

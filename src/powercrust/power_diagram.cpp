@@ -57,7 +57,7 @@ void gather_block(const PowerDiagram& diagram, const std::vector<Index>& cover, 
     if (v == RtVertex()) {  // hidden: no power cell; its one neighbour is the pole hiding it
       if (cover[p] != kNoPole) row.push_back(cover[p]);
     } else {
-      for (auto c : incident(rt, v))
+      for (auto c : incident(v))
         for (int j = 0; j < 4; ++j) {
           const RtVertex w = c->vertex(j);
           if (w != v && !rt.is_infinite(w)) row.push_back(w->info());

@@ -37,7 +37,7 @@ void collect(const PowerDiagram& diagram, const std::vector<Pole>& poles, Index 
   auto inner = [&](RtVertex w) { return !rt.is_infinite(w) && poles[w->info()].label == PoleLabel::In; };
   auto& found = scratch.pole;
   found.edges.clear(), found.triangles.clear(), found.tetrahedra.clear();
-  for (auto c : scratch.incident(rt, v)) {
+  for (auto c : scratch.incident(v)) {
     bool all = true;
     for (int j = 0; j < 4; ++j) all = all && inner(c->vertex(j));
     if (all) {
