@@ -1,4 +1,5 @@
 // Cut out the places where the sheet is not a disc at a given scale (SheetOptions::cut_handles_rel_rho).
+#include "sheet_geodesic.h"
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"
@@ -16,37 +17,6 @@
 
 namespace envcrust::extract {
 namespace {
-
-struct Adjacency {
-  std::vector<std::size_t> begin;  ///< per vertex, into neighbours
-  std::vector<std::pair<Index, double>> neighbours;
-  std::vector<std::size_t> face_begin;  ///< per vertex, into faces
-  std::vector<std::uint32_t> faces;
-};
-
-Adjacency adjacency(const TriangleMesh& mesh, const topology::MeshGraph& g) {
-  Adjacency a;
-  const std::size_t n = mesh.vertices.size();
-  a.begin.assign(n + 1, 0);
-  for (const auto& [u, v] : g.edges) ++a.begin[u + 1], ++a.begin[v + 1];
-  for (std::size_t v = 0; v < n; ++v) a.begin[v + 1] += a.begin[v];
-  a.neighbours.resize(a.begin[n]);
-  std::vector<std::size_t> fill(a.begin.begin(), a.begin.end() - 1);
-  for (const auto& [u, v] : g.edges) {
-    const double length = std::sqrt(CGAL::squared_distance(mesh.vertices[u], mesh.vertices[v]));
-    a.neighbours[fill[u]++] = {v, length};
-    a.neighbours[fill[v]++] = {u, length};
-  }
-  a.face_begin.assign(n + 1, 0);
-  for (const auto& t : mesh.triangles)
-    for (const Index v : t) ++a.face_begin[v + 1];
-  for (std::size_t v = 0; v < n; ++v) a.face_begin[v + 1] += a.face_begin[v];
-  a.faces.resize(a.face_begin[n]);
-  fill.assign(a.face_begin.begin(), a.face_begin.end() - 1);
-  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f)
-    for (const Index v : mesh.triangles[f]) a.faces[fill[v]++] = f;
-  return a;
-}
 
 // Seeds: one vertex per occupied cell of a grid of side `cell`, so every vertex lies within
 // sqrt(3) cell (in space, hence about as far along the sheet) of a seed.
@@ -69,44 +39,20 @@ std::vector<Index> grid_seeds(const TriangleMesh& mesh, double cell) {
 }
 
 struct BallScratch {
-  std::vector<double> distance;
-  std::vector<Index> reached;
+  explicit BallScratch(std::size_t vertices) : ball(vertices) {}
+  GeodesicBall ball;
   std::vector<std::uint32_t> faces;
   std::vector<std::pair<Index, Index>> edges;
 };
-
-// The vertices within `radius` of the seed along mesh edges (scratch.reached, with distances).
-void grow_ball(const Adjacency& a, Index seed, double radius, BallScratch& s) {
-  for (const Index v : s.reached) s.distance[v] = std::numeric_limits<double>::infinity();
-  s.reached.clear();
-  using Item = std::pair<double, Index>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  s.distance[seed] = 0;
-  s.reached.push_back(seed);
-  queue.emplace(0.0, seed);
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > s.distance[v]) continue;
-    for (std::size_t k = a.begin[v]; k < a.begin[v + 1]; ++k) {
-      const auto [w, length] = a.neighbours[k];
-      if (d + length > radius || d + length >= s.distance[w]) continue;
-      if (s.distance[w] == std::numeric_limits<double>::infinity()) s.reached.push_back(w);
-      s.distance[w] = d + length;
-      queue.emplace(d + length, w);
-    }
-  }
-}
 
 // Whether the faces of the ball (all three corners inside) fail to be discs: their Euler
 // characteristic, with each hole of the sheet that lies wholly inside counted as capped, is
 // below their number of components. A disc or half-disc (at the sheet's border) passes; a
 // handle, a cross-cap or a tube narrower than the ball fails.
-bool ball_is_not_a_disc(const TriangleMesh& mesh, const topology::MeshGraph& g, const Adjacency& a,
+bool ball_is_not_a_disc(const TriangleMesh& mesh, const topology::MeshGraph& g, const MeshAdjacency& a,
                         const std::vector<char>& on_border, BallScratch& s) {
-  const double inf = std::numeric_limits<double>::infinity();
   s.faces.clear();
-  for (const Index v : s.reached)
+  for (const Index v : s.ball.reached())
     for (std::size_t k = a.face_begin[v]; k < a.face_begin[v + 1]; ++k) {
       const std::uint32_t f = a.faces[k];
       const auto& t = mesh.triangles[f];
@@ -114,7 +60,7 @@ bool ball_is_not_a_disc(const TriangleMesh& mesh, const topology::MeshGraph& g, 
       Index first = std::numeric_limits<Index>::max();
       bool inside = true;
       for (const Index c : t) {
-        inside = inside && s.distance[c] != inf;
+        inside = inside && s.ball.contains(c);
         first = std::min(first, c);
       }
       if (inside && first == v) s.faces.push_back(f);
@@ -175,7 +121,7 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
   TriangleMesh& mesh = tagged.mesh;
   if (mesh.triangles.empty()) return stats;
   const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
-  const Adjacency a = adjacency(mesh, g);
+  const MeshAdjacency a = mesh_adjacency(mesh, g);
   std::vector<char> on_border(mesh.vertices.size(), 0);
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     if (g.face_count_of_edge(e) == 1) on_border[g.edges[e].first] = on_border[g.edges[e].second] = 1;
@@ -183,19 +129,15 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
   // inside the ball of some seed.
   const std::vector<Index> seeds = grid_seeds(mesh, 0.5 * radius / std::sqrt(3.0));
   std::vector<char> flagged(seeds.size(), 0);
-  tbb::enumerable_thread_specific<BallScratch> scratch([&] {
-    BallScratch s;
-    s.distance.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
-    return s;
-  });
+  tbb::enumerable_thread_specific<BallScratch> scratch([&] { return BallScratch(mesh.vertices.size()); });
   // A ball that is not a disc is confirmed on the ball three times as large: around a finger
   // thinner than the ball (a toe), the ball is an annulus but the larger one takes in the
   // fingertip and is a disc again; a handle or a cross-cap stays in any larger ball.
   tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
     BallScratch& s = scratch.local();
-    grow_ball(a, seeds[i], radius, s);
+    s.ball.grow(a, std::span(&seeds[i], 1), radius);
     if (!ball_is_not_a_disc(mesh, g, a, on_border, s)) return;
-    grow_ball(a, seeds[i], 3 * radius, s);
+    s.ball.grow(a, std::span(&seeds[i], 1), 3 * radius);
     flagged[i] = ball_is_not_a_disc(mesh, g, a, on_border, s);
   });
   // Each flagged ball shrinks to the smallest radius at which it is still not a disc (the
@@ -207,19 +149,18 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
     double lo = 0, hi = radius;
     for (int step = 0; step < 6; ++step) {
       const double mid = 0.5 * (lo + hi);
-      grow_ball(a, seeds[i], mid, s);
+      s.ball.grow(a, std::span(&seeds[i], 1), mid);
       (ball_is_not_a_disc(mesh, g, a, on_border, s) ? hi : lo) = mid;
     }
     smallest[i] = hi;
   });
   std::vector<char> remove(mesh.triangles.size(), 0);
-  BallScratch s;
-  s.distance.assign(mesh.vertices.size(), std::numeric_limits<double>::infinity());
+  GeodesicBall ball(mesh.vertices.size());
   for (std::size_t i = 0; i < seeds.size(); ++i) {
     if (!flagged[i]) continue;
     ++stats.balls;
-    grow_ball(a, seeds[i], smallest[i], s);
-    for (const Index v : s.reached)
+    ball.grow(a, std::span(&seeds[i], 1), smallest[i]);
+    for (const Index v : ball.reached())
       for (std::size_t k = a.face_begin[v]; k < a.face_begin[v + 1]; ++k) remove[a.faces[k]] = 1;
   }
   if (stats.balls == 0) return stats;

@@ -1,4 +1,5 @@
 // Cut a non-orientable sheet open around its orientation seams (SheetOptions::cut_to_orientable).
+#include "sheet_geodesic.h"
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"
@@ -6,10 +7,6 @@
 #include "envcrust/union_find.h"
 
 #include <algorithm>
-#include <cmath>
-#include <functional>
-#include <limits>
-#include <queue>
 
 namespace envcrust::extract {
 namespace {
@@ -33,36 +30,6 @@ std::vector<std::size_t> seam_edges(const TriangleMesh& mesh, const topology::Me
   return seams;
 }
 
-// Distance along mesh edges from the nearest seam vertex, up to `radius` (farther: infinity).
-std::vector<double> distance_from_seams(const TriangleMesh& mesh, const topology::MeshGraph& g,
-                                        const std::vector<std::size_t>& seams, double radius) {
-  std::vector<std::vector<std::pair<Index, double>>> adjacent(mesh.vertices.size());
-  for (const auto& [a, b] : g.edges) {
-    const double length = std::sqrt(CGAL::squared_distance(mesh.vertices[a], mesh.vertices[b]));
-    adjacent[a].emplace_back(b, length);
-    adjacent[b].emplace_back(a, length);
-  }
-  std::vector<double> distance(mesh.vertices.size(), std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, Index>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  for (const std::size_t e : seams)
-    for (const Index v : {g.edges[e].first, g.edges[e].second}) {
-      distance[v] = 0;
-      queue.emplace(0.0, v);
-    }
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[v]) continue;
-    for (const auto& [w, length] : adjacent[v])
-      if (d + length <= radius && d + length < distance[w]) {
-        distance[w] = d + length;
-        queue.emplace(d + length, w);
-      }
-  }
-  return distance;
-}
-
 std::size_t count_seams(const topology::MeshGraph& g, const std::vector<std::size_t>& seams, std::size_t vertices) {
   topology::UnionFind uf(vertices);
   for (const std::size_t e : seams) uf.unite(g.edges[e].first, g.edges[e].second);
@@ -83,10 +50,14 @@ OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, int max_
     const std::vector<std::size_t> seams = seam_edges(mesh, g);
     if (seams.empty()) return stats;
     if (round == 0) stats.seams = count_seams(g, seams, mesh.vertices.size());
-    const std::vector<double> distance = distance_from_seams(mesh, g, seams, radius);
+    std::vector<Index> seam_vertices;
+    for (const std::size_t e : seams) seam_vertices.push_back(g.edges[e].first), seam_vertices.push_back(g.edges[e].second);
+    const MeshAdjacency adjacency = mesh_adjacency(mesh, g);
+    GeodesicBall band(mesh.vertices.size());
+    band.grow(adjacency, seam_vertices, radius);
     std::vector<char> remove(mesh.triangles.size(), 0);
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-      for (const Index v : mesh.triangles[f]) remove[f] = remove[f] || distance[v] <= radius;
+    for (const Index v : band.reached())
+      for (std::size_t k = adjacency.face_begin[v]; k < adjacency.face_begin[v + 1]; ++k) remove[adjacency.faces[k]] = 1;
     stats.faces_removed += remove_faces(tagged, remove);
     // Removing a band can pinch vertices where it touched the border.
     make_manifold(tagged);
