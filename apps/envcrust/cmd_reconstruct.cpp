@@ -109,6 +109,9 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
 }
 
 void run_reconstruct(ReconstructCommand& cmd) {
+  const bool cuts = cmd.options.sheet.cut_to_orientable || cmd.options.sheet.cut_handles_rel_rho > 0;
+  if (cuts && (cmd.options.method != pipeline::Method::Envelope || cmd.options.extraction != pipeline::Extraction::Sheet))
+    throw UsageError("--orientable and --cut-handles apply to the medial sheet (--method envelope --extract sheet)");
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   if (cmd.use_remesh) cmd.options.remesh = cmd.remesh;

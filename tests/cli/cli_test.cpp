@@ -253,6 +253,11 @@ TEST_F(CliTest, reconstruct_orientable_cuts_the_moebius_strip_into_a_disc) {
   EXPECT_EQ(bad_handles.exit_code, 2);
   EXPECT_NE(bad_handles.err.find("--cut-handles"), std::string::npos) << bad_handles.err;
   EXPECT_FALSE(fs::exists(path("x.ply")));
+  const auto direct = run_envcrust("reconstruct builtin:moebius --method powercrust --orientable -o " + path("x.ply"));
+  EXPECT_EQ(direct.exit_code, 2);
+  EXPECT_EQ(direct.err, "envcrust: usage error: --orientable and --cut-handles apply to the medial sheet "
+                        "(--method envelope --extract sheet)\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
 TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
