@@ -10,9 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <unordered_map>
 
 namespace envcrust::extract {
