@@ -3,7 +3,6 @@
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"
-#include "envcrust/union_find.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -36,80 +35,92 @@ std::vector<Index> grid_seeds(const TriangleMesh& mesh, double cell) {
   return seeds;
 }
 
+// Per-thread working memory of the ball test, reused from ball to ball: per-vertex and
+// per-edge slots are valid only where their stamp is the current ball's.
 struct BallScratch {
-  explicit BallScratch(std::size_t vertices) : ball(vertices) {}
+  BallScratch(std::size_t vertices, std::size_t edges)
+      : ball(vertices), vertex_stamp(vertices, 0), vertex_local(vertices, 0), edge_stamp(edges, 0) {}
   GeodesicBall ball;
+  std::uint32_t stamp = 0;
   std::vector<std::uint32_t> faces;
-  std::vector<std::pair<Index, Index>> edges;
+  std::vector<std::uint32_t> vertex_stamp;
+  std::vector<Index> vertex_local;   ///< local id of a vertex of the ball's faces
+  std::vector<std::uint32_t> edge_stamp;
+  std::vector<Index> component, hole;  ///< union-find parents over local ids
+  std::vector<int> border_degree;     ///< per local id: border edges of the sheet at it
+  std::vector<int> hole_state;
 };
+
+Index find(std::vector<Index>& parent, Index x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+void unite(std::vector<Index>& parent, Index a, Index b) {
+  a = find(parent, a), b = find(parent, b);
+  if (a != b) parent[std::max(a, b)] = std::min(a, b);
+}
 
 // Whether the faces of the ball (all three corners inside) fail to be discs: their Euler
 // characteristic, with each hole of the sheet that lies wholly inside counted as capped, is
 // below their number of components. A disc or half-disc (at the sheet's border) passes; a
 // handle, a cross-cap or a tube narrower than the ball fails.
 bool ball_is_not_a_disc(const TriangleMesh& mesh, const topology::MeshGraph& g, const MeshAdjacency& a,
-                        const std::vector<char>& on_border, BallScratch& s) {
+                        BallScratch& s) {
   s.faces.clear();
   for (const Index v : s.ball.reached())
     for (std::size_t k = a.face_begin[v]; k < a.face_begin[v + 1]; ++k) {
       const std::uint32_t f = a.faces[k];
       const auto& t = mesh.triangles[f];
       // Each face once: from its inside corner of smallest index.
-      Index first = std::numeric_limits<Index>::max();
-      bool inside = true;
-      for (const Index c : t) {
-        inside = inside && s.ball.contains(c);
-        first = std::min(first, c);
-      }
-      if (inside && first == v) s.faces.push_back(f);
+      if (s.ball.contains(t[0]) && s.ball.contains(t[1]) && s.ball.contains(t[2]) &&
+          std::min({t[0], t[1], t[2]}) == v)
+        s.faces.push_back(f);
     }
   if (s.faces.empty()) return false;
-  s.edges.clear();
-  for (const std::uint32_t f : s.faces)
-    for (int k = 0; k < 3; ++k) {
-      const Index u = mesh.triangles[f][k], w = mesh.triangles[f][(k + 1) % 3];
-      s.edges.emplace_back(std::min(u, w), std::max(u, w));
-    }
-  std::sort(s.edges.begin(), s.edges.end());
-  const auto edge_count = static_cast<long>(std::unique(s.edges.begin(), s.edges.end()) - s.edges.begin());
-  s.edges.resize(static_cast<std::size_t>(edge_count));
-  // Vertices used by the faces, components of the faces (through shared vertices, which is
-  // what a fan of faces around a vertex joins), and the sheet's border edges among them.
-  std::unordered_map<Index, Index> local;
-  for (const std::uint32_t f : s.faces)
-    for (const Index c : mesh.triangles[f]) local.emplace(c, static_cast<Index>(local.size()));
-  topology::UnionFind components(local.size());
+  if (++s.stamp == 0) {  // wrapped: clear the stamps
+    std::fill(s.vertex_stamp.begin(), s.vertex_stamp.end(), 0);
+    std::fill(s.edge_stamp.begin(), s.edge_stamp.end(), 0);
+    s.stamp = 1;
+  }
+  // Local ids of the faces' vertices, and their distinct edges.
+  Index vertices = 0;
+  long edges = 0;
+  for (const std::uint32_t f : s.faces) {
+    for (const Index c : mesh.triangles[f])
+      if (s.vertex_stamp[c] != s.stamp) s.vertex_stamp[c] = s.stamp, s.vertex_local[c] = vertices++;
+    for (const std::uint32_t e : g.face_edges[f])
+      if (s.edge_stamp[e] != s.stamp) s.edge_stamp[e] = s.stamp, ++edges;
+  }
+  // Components of the faces (through shared vertices, which is what a fan of faces around a
+  // vertex joins), and the sheet's holes among them: connected border edges (one face in the
+  // whole sheet) whose every vertex has two of them in the ball form a closed loop.
+  s.component.resize(vertices);
+  s.hole.resize(vertices);
+  s.border_degree.assign(vertices, 0);
+  for (Index i = 0; i < vertices; ++i) s.component[i] = s.hole[i] = i;
   for (const std::uint32_t f : s.faces) {
     const auto& t = mesh.triangles[f];
-    components.unite(local[t[0]], local[t[1]]);
-    components.unite(local[t[0]], local[t[2]]);
+    unite(s.component, s.vertex_local[t[0]], s.vertex_local[t[1]]);
+    unite(s.component, s.vertex_local[t[0]], s.vertex_local[t[2]]);
+    for (const std::uint32_t e : g.face_edges[f]) {
+      if (g.face_count_of_edge(e) != 1) continue;  // a border edge belongs to this face only
+      const Index u = s.vertex_local[g.edges[e].first], w = s.vertex_local[g.edges[e].second];
+      unite(s.hole, u, w);
+      ++s.border_degree[u], ++s.border_degree[w];
+    }
   }
-  std::size_t component_count = 0;
-  for (const auto& [v, i] : local) component_count += components.find(i) == i;
-  // Holes of the sheet wholly inside: cycles of border edges among the ball's edges. Each
-  // connected set of border edges whose vertices all have two border edges in the ball is a
-  // closed loop.
-  topology::UnionFind holes(local.size());
-  std::unordered_map<Index, int> border_degree;
-  for (const auto& [u, w] : s.edges) {
-    if (!(on_border[u] && on_border[w])) continue;
-    // A border edge of the sheet: one face in the whole mesh.
-    const auto it = std::lower_bound(g.edges.begin(), g.edges.end(), std::make_pair(u, w));
-    if (it == g.edges.end() || *it != std::make_pair(u, w)) continue;
-    if (g.face_count_of_edge(static_cast<std::size_t>(it - g.edges.begin())) != 1) continue;
-    holes.unite(local[u], local[w]);
-    ++border_degree[u], ++border_degree[w];
+  long components = 0, capped = 0;
+  s.hole_state.assign(vertices, 0);  // per hole root: 1 closed so far, 2 open
+  for (Index i = 0; i < vertices; ++i) {
+    components += find(s.component, i) == i;
+    if (s.border_degree[i] == 0) continue;
+    int& state = s.hole_state[find(s.hole, i)];
+    state = (state == 2 || s.border_degree[i] != 2) ? 2 : 1;
   }
-  std::unordered_map<Index, bool> closed;  // hole root -> every vertex has two border edges
-  for (const auto& [v, degree] : border_degree) {
-    const Index root = holes.find(local[v]);
-    auto [it, fresh] = closed.emplace(root, true);
-    it->second = it->second && degree == 2;
-  }
-  long capped = 0;
-  for (const auto& [root, is_closed] : closed) capped += is_closed;
-  const long chi = static_cast<long>(local.size()) - edge_count + static_cast<long>(s.faces.size()) + capped;
-  return chi < static_cast<long>(component_count);
+  for (const int state : s.hole_state) capped += state == 1;
+  const long chi = static_cast<long>(vertices) - edges + static_cast<long>(s.faces.size()) + capped;
+  return chi < components;
 }
 
 }  // namespace
@@ -120,23 +131,20 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
   if (mesh.triangles.empty()) return stats;
   const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
   const MeshAdjacency a = mesh_adjacency(mesh, g);
-  std::vector<char> on_border(mesh.vertices.size(), 0);
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    if (g.face_count_of_edge(e) == 1) on_border[g.edges[e].first] = on_border[g.edges[e].second] = 1;
   // Seeds half a radius apart: a defect smaller than about half the radius lies wholly
   // inside the ball of some seed.
   const std::vector<Index> seeds = grid_seeds(mesh, 0.5 * radius / std::sqrt(3.0));
   std::vector<char> flagged(seeds.size(), 0);
-  tbb::enumerable_thread_specific<BallScratch> scratch([&] { return BallScratch(mesh.vertices.size()); });
+  tbb::enumerable_thread_specific<BallScratch> scratch([&] { return BallScratch(mesh.vertices.size(), g.edges.size()); });
   // A ball that is not a disc is confirmed on the ball three times as large: around a finger
   // thinner than the ball (a toe), the ball is an annulus but the larger one takes in the
   // fingertip and is a disc again; a handle or a cross-cap stays in any larger ball.
   tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
     BallScratch& s = scratch.local();
     s.ball.grow(a, std::span(&seeds[i], 1), radius);
-    if (!ball_is_not_a_disc(mesh, g, a, on_border, s)) return;
+    if (!ball_is_not_a_disc(mesh, g, a, s)) return;
     s.ball.grow(a, std::span(&seeds[i], 1), 3 * radius);
-    flagged[i] = ball_is_not_a_disc(mesh, g, a, on_border, s);
+    flagged[i] = ball_is_not_a_disc(mesh, g, a, s);
   });
   // Each flagged ball shrinks to the smallest radius at which it is still not a disc (the
   // defect then lies on its rim), found by bisection; the faces of that ball are removed.
@@ -148,7 +156,7 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
     for (int step = 0; step < 6; ++step) {
       const double mid = 0.5 * (lo + hi);
       s.ball.grow(a, std::span(&seeds[i], 1), mid);
-      (ball_is_not_a_disc(mesh, g, a, on_border, s) ? hi : lo) = mid;
+      (ball_is_not_a_disc(mesh, g, a, s) ? hi : lo) = mid;
     }
     smallest[i] = hi;
   });
