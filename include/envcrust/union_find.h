@@ -9,8 +9,12 @@ namespace envcrust::topology {
 
 class UnionFind {
  public:
-  explicit UnionFind(std::size_t n) : parent_(n), size_(n, 1) {
+  explicit UnionFind(std::size_t n) { reset(n); }
+  /// Start over with n singletons (the storage is reused: for many small forests in a row).
+  void reset(std::size_t n) {
+    parent_.resize(n);
     std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+    size_.assign(n, 1);
   }
   std::uint32_t find(std::uint32_t x);
   void unite(std::uint32_t a, std::uint32_t b);

@@ -3,6 +3,7 @@
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"
+#include "envcrust/union_find.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -46,20 +47,10 @@ struct BallScratch {
   std::vector<std::uint32_t> vertex_stamp;
   std::vector<Index> vertex_local;   ///< local id of a vertex of the ball's faces
   std::vector<std::uint32_t> edge_stamp;
-  std::vector<Index> component, hole;  ///< union-find parents over local ids
+  topology::UnionFind component{0}, hole{0};  ///< over local ids
   std::vector<int> border_degree;     ///< per local id: border edges of the sheet at it
   std::vector<int> hole_state;
 };
-
-Index find(std::vector<Index>& parent, Index x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
-void unite(std::vector<Index>& parent, Index a, Index b) {
-  a = find(parent, a), b = find(parent, b);
-  if (a != b) parent[std::max(a, b)] = std::min(a, b);
-}
 
 // Whether the faces of the ball (all three corners inside) fail to be discs: their Euler
 // characteristic, with each hole of the sheet that lies wholly inside counted as capped, is
@@ -95,27 +86,26 @@ bool ball_is_not_a_disc(const TriangleMesh& mesh, const topology::MeshGraph& g, 
   // Components of the faces (through shared vertices, which is what a fan of faces around a
   // vertex joins), and the sheet's holes among them: connected border edges (one face in the
   // whole sheet) whose every vertex has two of them in the ball form a closed loop.
-  s.component.resize(vertices);
-  s.hole.resize(vertices);
+  s.component.reset(vertices);
+  s.hole.reset(vertices);
   s.border_degree.assign(vertices, 0);
-  for (Index i = 0; i < vertices; ++i) s.component[i] = s.hole[i] = i;
   for (const std::uint32_t f : s.faces) {
     const auto& t = mesh.triangles[f];
-    unite(s.component, s.vertex_local[t[0]], s.vertex_local[t[1]]);
-    unite(s.component, s.vertex_local[t[0]], s.vertex_local[t[2]]);
+    s.component.unite(s.vertex_local[t[0]], s.vertex_local[t[1]]);
+    s.component.unite(s.vertex_local[t[0]], s.vertex_local[t[2]]);
     for (const std::uint32_t e : g.face_edges[f]) {
       if (g.face_count_of_edge(e) != 1) continue;  // a border edge belongs to this face only
       const Index u = s.vertex_local[g.edges[e].first], w = s.vertex_local[g.edges[e].second];
-      unite(s.hole, u, w);
+      s.hole.unite(u, w);
       ++s.border_degree[u], ++s.border_degree[w];
     }
   }
   long components = 0, capped = 0;
   s.hole_state.assign(vertices, 0);  // per hole root: 1 closed so far, 2 open
   for (Index i = 0; i < vertices; ++i) {
-    components += find(s.component, i) == i;
+    components += s.component.find(i) == i;
     if (s.border_degree[i] == 0) continue;
-    int& state = s.hole_state[find(s.hole, i)];
+    int& state = s.hole_state[s.hole.find(i)];
     state = (state == 2 || s.border_degree[i] != 2) ? 2 : 1;
   }
   for (const int state : s.hole_state) capped += state == 1;
