@@ -14,11 +14,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdint>
-#include <limits>
 #include <memory>
 #include <numeric>
-#include <tuple>
 
 namespace envcrust::powercrust {
 namespace {
