@@ -166,7 +166,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"orientation_seams", s.orientation_seams},
                   {"faces_removed_at_seams", s.faces_removed_at_seams},
                   {"handle_balls", s.handle_balls},
-                  {"faces_removed_at_handles", s.faces_removed_at_handles}};
+                  {"faces_removed_at_handles", s.faces_removed_at_handles},
+                  {"cut_holes_filled", s.cut_holes_filled}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;
@@ -268,16 +269,20 @@ void register_reconstruct(CLI::App& app) {
   sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
   sub->add_flag("--orientable", cmd->options.sheet.cut_to_orientable,
                 "The surface is orientable (a scan of a solid): where the sheet comes out non-orientable, remove it within "
-                "--orientable-cut rho of each orientation seam (a hole instead of a cross-cap; reported)");
+                "--orientable-cut rho of each orientation seam, and close the hole with a disc (reported)");
   sub->add_option("--orientable-cut", cmd->options.sheet.orientable_cut_rel_rho,
                   "With --orientable: half-width of the band removed around a seam, in rho")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub->add_option("--cut-handles", cmd->options.sheet.cut_handles_rel_rho,
                   "Remove every geodesic ball of this radius (in rho) where the result is not a disc once its own "
-                  "holes are capped: handles and cross-caps at thin, sparsely sampled parts (reported; 0: off)")
+                  "holes are capped, and close each hole with a disc: handles and cross-caps at thin, sparsely "
+                  "sampled parts (reported; 0: off)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  sub->add_flag("--keep-cut-holes", [cmd](std::int64_t) { cmd->options.sheet.fill_cut_holes = false; },
+                "With --orientable or --cut-handles: leave the holes the cuts make open instead of closing them "
+                "(those along a boundary curve are never closed)");
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
   sub->add_flag("--remesh", cmd->use_remesh,

@@ -74,6 +74,10 @@ struct SheetOptions {
   /// are capped (handles and cross-caps where a thin part was sampled too sparsely; also any
   /// true tube thinner than the ball). 0: off (default). >= 0.
   double cut_handles_rel_rho = 0.0;
+  /// After either cut: close each hole it left that runs along no boundary curve (see
+  /// use_fill_away_from_boundary) with a smooth disc (refined and faired triangulation of the
+  /// hole), so a handle or cross-cap becomes a cap instead of a hole. False keeps the holes.
+  bool fill_cut_holes = true;
 };
 
 /// What extract_sheet did.
@@ -100,6 +104,8 @@ struct SheetStats {
   /// SheetOptions::cut_handles_rel_rho: balls that were not discs, and the faces removed.
   std::size_t handle_balls = 0;
   std::size_t faces_removed_at_handles = 0;
+  /// SheetOptions::fill_cut_holes: holes left by the cuts closed with a disc.
+  std::size_t cut_holes_filled = 0;
 };
 
 /// The extracted sheet.

@@ -105,6 +105,9 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   // hole filling the smallest rho (a hole of 2 pi rho_min is below resolution everywhere).
   const std::vector<double> max_distance = component_distances(envelope, surface, samples, options);
   const double fill_rho = envelope.local_rho.empty() ? envelope.rho : envelope.rho_min;
+  std::vector<Point3> boundary_points;
+  for (const auto& c : surface.boundary)
+    for (const auto& b : c.vertices) boundary_points.push_back(b.position);
   if (options.max_face_distance_rel_rho > 0)
     result.stats.far_faces_removed = drop_far_faces(sheet, samples, far_distances(envelope, surface, samples, options));
   // Outer medial-axis pieces go first: they would otherwise meet the sheet at non-manifold
@@ -136,12 +139,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     if (options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled +=
           fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
-    if (options.use_fill_away_from_boundary) {
-      std::vector<Point3> boundary_points;
-      for (const auto& c : surface.boundary)
-        for (const auto& b : c.vertices) boundary_points.push_back(b.position);
+    if (options.use_fill_away_from_boundary)
       result.stats.holes_filled += fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
-    }
     result.stats.vertices_split += split_pinched_vertices(sheet);
     compact_vertices(sheet);
     const auto snapped = snap_border(sheet, surface, envelope.rho,
@@ -162,24 +161,32 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.warnings.push_back(std::to_string(repair.faces_dropped) +
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
   // After a cut: the removed bands or balls leave crumbs between them (dropped) and, around
-  // seams, pinholes where a band barely touched the sheet (filled when `fill`).
-  auto tidy_after_cut = [&](bool fill) {
+  // seams, pinholes where a band barely touched the sheet (fanned when `fill_pinholes`); with
+  // fill_cut_holes every hole away from the boundary curves is closed by a smooth disc.
+  // Returns the text the cut's warning ends with.
+  auto tidy_after_cut = [&](bool fill_pinholes) -> std::string {
     result.stats.components_dropped +=
         filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
-    if (fill && options.fill_loops_shorter_than_rel_rho > 0)
+    if (fill_pinholes && options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+    std::size_t closed = 0;
+    if (options.fill_cut_holes)
+      closed = fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
+    result.stats.cut_holes_filled += closed;
     make_manifold(sheet);
+    if (closed == 0) return "";
+    return "; " + std::to_string(closed) + " hole" + (closed == 1 ? "" : "s") + " closed with a disc";
   };
   if (options.cut_to_orientable) {
     const OrientableCutStats cut = cut_to_orientable(sheet, options.orientable_cut_rel_rho * envelope.rho);
     result.stats.orientation_seams = cut.seams;
     result.stats.faces_removed_at_seams = cut.faces_removed;
     if (cut.seams > 0) {
-      tidy_after_cut(true);
+      const std::string closed = tidy_after_cut(true);
       result.warnings.push_back("the sheet was non-orientable: " + std::to_string(cut.faces_removed) +
                                 " faces removed around " + std::to_string(cut.seams) + " orientation seam" +
                                 (cut.seams == 1 ? "" : "s") +
-                                (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : ""));
+                                (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : "") + closed);
     }
   }
   if (options.cut_handles_rel_rho > 0) {
@@ -187,10 +194,10 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.handle_balls = cut.balls;
     result.stats.faces_removed_at_handles = cut.faces_removed;
     if (cut.balls > 0) {
-      tidy_after_cut(false);  // a fan over a hole left by a handle could close it again
+      const std::string closed = tidy_after_cut(false);
       std::ostringstream w;
       w << "the sheet was not a disc in " << cut.balls << " ball" << (cut.balls == 1 ? "" : "s") << " of radius "
-        << options.cut_handles_rel_rho << " rho: " << cut.faces_removed << " faces removed there";
+        << options.cut_handles_rel_rho << " rho: " << cut.faces_removed << " faces removed there" << closed;
       result.warnings.push_back(w.str());
     }
   }

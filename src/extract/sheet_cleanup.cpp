@@ -236,7 +236,7 @@ std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
 }
 
 std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
-                                          double max_distance) {
+                                          double max_distance, HoleFill fill) {
   const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
   const NearestIndex nearest(boundary_points);
   std::size_t filled = 0;
@@ -247,7 +247,7 @@ std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point
       for (Index v : loop.vertices)
         if (nearest.nearest(t.mesh.vertices[v]).second <= max_distance) ++near;
     if (2 * near >= loop.vertices.size()) continue;
-    fill_with_fan(t, loop.vertices);
+    if (fill == HoleFill::Fan || !fill_with_patch(t, loop.vertices)) fill_with_fan(t, loop.vertices);
     ++filled;
   }
   return filled;

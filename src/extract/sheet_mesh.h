@@ -46,12 +46,24 @@ std::size_t filter_components(TaggedMesh& tagged, const NearestIndex& samples,
 std::size_t drop_far_faces(TaggedMesh& tagged, const NearestIndex& samples,
                            const std::vector<double>& max_distance);
 
-/// Fill (centroid fan) the border loops of which fewer than half the vertices lie within
-/// `max_distance` of `boundary_points`: such a loop follows no boundary curve of M, so it is a
-/// hole of the envelope where the input has a sampling gap (METHOD.md §5 c1 self-check: every
-/// border loop runs along a rim). Returns the number of loops filled.
+/// How a hole is closed.
+enum class HoleFill {
+  Fan,    ///< triangles from the loop's edges to its centroid (a new vertex)
+  Patch,  ///< fill_with_patch, or a fan where that fails
+};
+
+/// Close the border loop `loop` (vertex ids in order) with a disc of smooth, even triangles:
+/// CGAL's hole triangulation of the loop, refined to its edge density and faired with the
+/// loop fixed. New faces get the tag -1. False (nothing added) when CGAL finds no
+/// triangulation.
+bool fill_with_patch(TaggedMesh& tagged, const std::vector<Index>& loop);
+
+/// Fill the border loops of which fewer than half the vertices lie within `max_distance` of
+/// `boundary_points`: such a loop follows no boundary curve of M, so it is a hole of the
+/// envelope where the input has a sampling gap, or one that a cut left (METHOD.md §5 c1
+/// self-check: every border loop runs along a rim). Returns the number of loops filled.
 std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
-                                          double max_distance);
+                                          double max_distance, HoleFill fill = HoleFill::Fan);
 
 /// Fill boundary loops shorter than `max_length` with a fan around their centroid. Returns
 /// the number of loops filled.

@@ -1,12 +1,13 @@
 // cut_local_handles on a plane with a handle built here: the balls around the handle are not
 // discs and go; the plane far from it stays; a plane without a handle (but with a small hole
-// of its own) is left as it was.
+// of its own) is left as it was. fill_with_patch closes the holes such a cut leaves.
 #include "envcrust/topology.h"
 
 #include "sheet_mesh.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -156,4 +157,79 @@ TEST(CutLocalHandles, keeps_a_finger_thinner_than_the_balls) {
   const HandleCutStats stats = cut_local_handles(m, 0.5);
   EXPECT_EQ(stats.balls, 0u);
   EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
+}
+
+namespace {
+
+std::vector<Point3> plane_rim_points() {
+  std::vector<Point3> rim;
+  for (int k = 0; k <= 60; ++k) {
+    const double t = 0.1 * k;
+    rim.insert(rim.end(), {Point3(t, 0, 0), Point3(t, 6, 0), Point3(0, t, 0), Point3(6, t, 0)});
+  }
+  return rim;
+}
+
+double total_area(const TriangleMesh& m) {
+  double area = 0;
+  for (const auto& f : m.triangles)
+    area += std::sqrt(Kernel::Triangle_3(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]).squared_area());
+  return area;
+}
+
+}  // namespace
+
+// A 1 x 1 hole in the plane: the patch is flat, covers the hole exactly, and its new vertices
+// sit inside the hole with edges about as long as the rim's.
+TEST(FillWithPatch, closes_a_square_hole_with_a_flat_disc_of_even_triangles) {
+  TaggedMesh m = grid_plane([](int i, int j) { return i >= 25 && i < 35 && j >= 25 && j < 35; });
+  m.face_dot.assign(m.mesh.triangles.size(), -1.0);
+  const std::size_t grid_vertices = m.mesh.vertices.size();
+  EXPECT_EQ(fill_loops_away_from_boundary(m, plane_rim_points(), 0.05, HoleFill::Patch), 1u);
+  EXPECT_EQ(m.face_dot.size(), m.mesh.triangles.size());
+  const auto t = topology::analyze_topology(m.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.euler_characteristic, 1);
+  EXPECT_EQ(t.boundary_loops.size(), 1u);  // the plane's rim only
+  EXPECT_NEAR(total_area(m.mesh), 36.0, 1e-9);
+  ASSERT_GT(m.mesh.vertices.size(), grid_vertices + 20);  // refined, not just the rim's 40
+  double longest = 0;
+  for (std::size_t v = grid_vertices; v < m.mesh.vertices.size(); ++v) {
+    const Point3& p = m.mesh.vertices[v];
+    EXPECT_NEAR(p.z(), 0.0, 1e-9);
+    EXPECT_TRUE(p.x() > 2.5 && p.x() < 3.5 && p.y() > 2.5 && p.y() < 3.5) << p;
+  }
+  for (const auto& f : m.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (f[k] >= grid_vertices || f[(k + 1) % 3] >= grid_vertices)
+        longest = std::max(longest, std::sqrt(CGAL::squared_distance(m.mesh.vertices[f[k]], m.mesh.vertices[f[(k + 1) % 3]])));
+  EXPECT_LT(longest, 0.3);  // rim edges are 0.1
+}
+
+// After the handle is cut out, the holes the cut left (away from the plane's rim, the one
+// boundary curve) are closed: the plane is one disc again.
+TEST(FillWithPatch, closes_the_holes_a_handle_cut_leaves) {
+  TaggedMesh m = plane_with_holes(true);
+  ASSERT_GT(cut_local_handles(m, 0.8).balls, 0u);
+  const auto cut = topology::analyze_topology(m.mesh);
+  ASSERT_GT(cut.boundary_loops.size(), 1u);
+  EXPECT_EQ(fill_loops_away_from_boundary(m, plane_rim_points(), 0.05, HoleFill::Patch),
+            cut.boundary_loops.size() - 1);
+  const auto t = topology::analyze_topology(m.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  ASSERT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, 1);
+  EXPECT_EQ(t.boundary_loops.size(), 1u);
+}
+
+// A loop through one vertex twice (two holes touching there) is no disc's rim: refused.
+TEST(FillWithPatch, refuses_a_loop_that_passes_a_vertex_twice) {
+  TaggedMesh m = grid_plane([](int, int) { return false; });
+  m.face_dot.assign(m.mesh.triangles.size(), -1.0);
+  const TaggedMesh original = m;
+  const std::vector<Index> loop = {grid_id(10, 10), grid_id(11, 10), grid_id(11, 11), grid_id(10, 10),
+                                   grid_id(9, 10), grid_id(9, 9)};
+  EXPECT_FALSE(fill_with_patch(m, loop));
+  EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
+  EXPECT_EQ(m.mesh.vertices.size(), original.mesh.vertices.size());
 }
