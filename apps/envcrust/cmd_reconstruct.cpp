@@ -108,6 +108,32 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   return j;
 }
 
+// What to try when a scan (a point file or a mesh, not a built-in surface) comes out with
+// cross-caps or handles: the usual cause is a part thinner than 2 rho or sampled too sparsely,
+// which the cuts repair when the scanned surface is known to be orientable and locally a disc.
+std::vector<std::string> scan_hints(const LoadedSurface& loaded, const ReconstructCommand& cmd,
+                                    const analysis::AnalysisReport& report) {
+  const auto& sheet = cmd.options.sheet;
+  if (loaded.source == "builtin" || cmd.options.method != pipeline::Method::Envelope ||
+      cmd.options.extraction != pipeline::Extraction::Sheet)
+    return {};
+  long cross_caps = 0, handles = 0;
+  for (const auto& c : report.topology.components) {
+    if (!c.genus) continue;
+    (c.is_orientable ? handles : cross_caps) += *c.genus;
+  }
+  std::vector<std::string> hints;
+  if (cross_caps > 0 && !sheet.cut_to_orientable)
+    hints.push_back("the result is non-orientable (" + std::to_string(cross_caps) + " cross-cap" +
+                    (cross_caps == 1 ? "" : "s") + "): if the input scans an orientable surface, --orientable removes them and "
+                    "closes the holes, and --cut-handles 1.5 also removes handles at thin parts");
+  else if (handles > 0 && sheet.cut_handles_rel_rho == 0)
+    hints.push_back("the result has genus " + std::to_string(handles) +
+                    ": if the scanned surface has no handles at the scale of rho, --cut-handles 1.5 removes them "
+                    "and closes the holes");
+  return hints;
+}
+
 void run_reconstruct(ReconstructCommand& cmd) {
   const bool cuts = cmd.options.sheet.cut_to_orientable || cmd.options.sheet.cut_handles_rel_rho > 0;
   if (cuts && (cmd.options.method != pipeline::Method::Envelope || cmd.options.extraction != pipeline::Extraction::Sheet))
@@ -195,6 +221,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
     report = analysis::analyze_mesh(result.mesh, reference);
     j["analysis"] = analysis_json(*report);
   }
+  const std::vector<std::string> hints = report ? scan_hints(loaded, cmd, *report) : std::vector<std::string>{};
+  j["hints"] = hints;
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
   if (cmd.common.json) {
     print_json(j);
@@ -220,6 +248,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << s->min_angle_deg_after << " deg, " << s->seconds << " s\n";
   for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
   if (report) print_analysis(std::cout, cmd.output, *report);
+  for (const auto& h : hints) std::cout << "  hint: " << h << "\n";
 }
 
 

@@ -191,11 +191,13 @@ TEST_F(CliTest, reconstruct_with_remesh_reports_faces_and_analyzes_the_remeshed_
 TEST_F(CliTest, reconstruct_moebius_is_non_orientable_with_one_boundary) {
   const auto r = run_envcrust("reconstruct builtin:moebius -n 5000 -o " + path("m.off") + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto a = nlohmann::json::parse(r.out)["analysis"];
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 1);
   EXPECT_EQ(a["is_orientable"], false);
   EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_TRUE(j["hints"].empty()) << "a built-in surface is known: no hint";
 }
 
 TEST_F(CliTest, direct_power_crust_closes_the_open_cylinder) {
@@ -404,11 +406,19 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   ASSERT_EQ(run_envcrust("sample moebius --mesh -q -o " + path("m.off")).exit_code, 0);
   const auto r = run_envcrust("reconstruct " + path("m.off") + " -r builtin:moebius -o " + path("r.ply") + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto a = nlohmann::json::parse(r.out)["analysis"];
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 1);
   EXPECT_EQ(a["is_orientable"], false);
   EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+  // A non-orientable result from a file could be a scan gone wrong: the hint names the flags.
+  ASSERT_EQ(j["hints"].size(), 1u);
+  EXPECT_EQ(j["hints"][0], "the result is non-orientable (1 cross-cap): if the input scans an orientable surface, "
+                           "--orientable removes them and closes the holes, and --cut-handles 1.5 also removes "
+                           "handles at thin parts");
+  const auto text = run_envcrust("reconstruct " + path("m.off") + " --no-analysis -o " + path("r.ply"));
+  EXPECT_EQ(text.out.find("hint:"), std::string::npos) << "no analysis, no hint";
 }
 
 // Scans often repeat triangles (the face scan in ../shared/data has 18): they are dropped with
