@@ -53,8 +53,15 @@ void use_estimated_normal_settings(const LoadedSurface&, envelope::EnvelopeOptio
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_option("input", cmd.input, "builtin:NAME, a point file (.xyz/.pts/.txt/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
-  sub.add_option("--rho", cmd.rho, "Envelope radius: 'auto' (half the estimated reach) or a value")
+  sub.add_option("--rho", cmd.rho,
+                 "Envelope radius: 'auto' (half the estimated reach, raised to bridge the gaps of "
+                 "--rho-gap-quantile of the samples) or a value")
       ->capture_default_str();
+  sub.add_option("--rho-gap-quantile", cmd.options.envelope.gap_quantile,
+                 "Automatic rho is at least this quantile of the samples' 8th-neighbour distances / 2.5 "
+                 "(0: half the reach only)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   sub.add_option("--spacing", cmd.options.envelope.spacing_rel_rho,
                  "Envelope sample spacing as a fraction of rho")->capture_default_str();
   sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME inputs")->capture_default_str();
@@ -103,7 +110,7 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   if (e.reach.pairs_examined > 0) {
     j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
                   {"bottleneck", e.reach.bottleneck}};
-    j["rho_from"] = e.is_rho_noise_bound ? "noise" : "reach";
+    j["rho_from"] = e.is_rho_gap_bound ? "gaps" : e.is_rho_noise_bound ? "noise" : "reach";
   }
   return j;
 }
@@ -235,6 +242,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     std::cout << "  envelope: rho " << (result.envelope.local_rho.empty() ? "" : "adaptive, at most ")
               << result.envelope.rho
               << (result.envelope.reach.pairs_examined == 0 ? ""
+                  : result.envelope.is_rho_gap_bound       ? " (from the input's gaps)"
                   : result.envelope.is_rho_noise_bound     ? " (from the noise)"
                                                            : " (from the reach)")
               << (result.envelope.local_rho.empty() ? "" : ", at least " + std::to_string(result.envelope.rho_min))

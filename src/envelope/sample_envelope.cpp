@@ -51,6 +51,7 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
         o.fold_warning_fraction);
   check(o.min_rho_rel_noise >= 0, "min_rho_rel_noise", o.min_rho_rel_noise);
   check(o.reach_quantile >= 0 && o.reach_quantile < 1, "reach_quantile", o.reach_quantile);
+  check(o.gap_quantile >= 0 && o.gap_quantile <= 1, "gap_quantile", o.gap_quantile);
   check(o.reach_min_pair_rel_spacing >= 0, "reach_min_pair_rel_spacing", o.reach_min_pair_rel_spacing);
   check(o.adaptive_min_rel_rho > 0 && o.adaptive_min_rel_rho <= 1, "adaptive_min_rel_rho", o.adaptive_min_rel_rho);
   check(o.adaptive_rho_rel_lfs > 0 && o.adaptive_rho_rel_lfs < 1, "adaptive_rho_rel_lfs", o.adaptive_rho_rel_lfs);
@@ -92,6 +93,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   input_tree.build();
   out.noise = surface.points.size() >= 4 ? estimate_noise(surface.points, input_tree, NoiseOptions{}) : 0.0;
   const double average_spacing = strided_average_spacing(surface.points, input_tree, 6);
+  auto distances = neighbour_distances(surface.points, input_tree);
+  out.input_neighbour_distance = std::move(distances.rk);
+  out.input_nearest_distance = std::move(distances.nearest);
   if (options.rho) {
     out.rho = *options.rho;
   } else {
@@ -108,13 +112,26 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                                ", more than the estimated reach " + format(capped) +
                                ": the envelope may fold onto itself; denoise or sample denser");
     }
+    if (options.gap_quantile > 0 && !out.input_neighbour_distance.empty()) {
+      std::vector<double> rk = out.input_neighbour_distance;
+      const auto at = std::min(rk.size() - 1, static_cast<std::size_t>(options.gap_quantile * static_cast<double>(rk.size())));
+      std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
+      const double bridging = rk[at] / kGapsPerRho;
+      if (bridging > out.rho) {
+        out.warnings.push_back("rho raised from " + format(out.rho) + " (half the estimated reach) to " +
+                               format(bridging) + " to bridge the gaps between " +
+                               format(100.0 * options.gap_quantile) +
+                               "% of the samples and their 8th neighbours; above half the reach the envelope "
+                               "may fold where the input is thin (handles, cross-caps)");
+        out.rho = bridging;
+        out.is_rho_gap_bound = true;
+        out.is_rho_noise_bound = false;
+      }
+    }
   }
   out.spacing = options.spacing_rel_rho * out.rho;
   out.rho_min = out.rho;
 
-  auto distances = neighbour_distances(surface.points, input_tree);
-  out.input_neighbour_distance = std::move(distances.rk);
-  out.input_nearest_distance = std::move(distances.nearest);
   std::vector<double> rho(surface.points.size(), out.rho);
   if (options.rho_mode == RhoMode::Adaptive) {
     out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing);

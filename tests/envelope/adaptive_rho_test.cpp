@@ -47,8 +47,8 @@ TEST(LocalReach, facing_sheets_read_half_their_gap_and_open_parts_read_far_more)
   const auto lfs = envelope::estimate_local_reach(s, o);
   ASSERT_EQ(lfs.size(), s.points.size());
   for (std::size_t i = 0; i < s.points.size(); ++i) {
-    if (is_under_sheet_b(s.points[i])) EXPECT_NEAR(lfs[i], kGap / 2, 0.005) << "point " << i;
-    if (is_far_from_sheet_b(s.points[i])) EXPECT_GT(lfs[i], 0.5) << "point " << i;
+    if (is_under_sheet_b(s.points[i])) { EXPECT_NEAR(lfs[i], kGap / 2, 0.005) << "point " << i; }
+    if (is_far_from_sheet_b(s.points[i])) { EXPECT_GT(lfs[i], 0.5) << "point " << i; }
   }
 }
 
@@ -77,16 +77,16 @@ TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     EXPECT_GE(rho[i], o.rho_min);
     EXPECT_LE(rho[i], o.rho_max);
-    if (is_under_sheet_b(s.points[i])) EXPECT_NEAR(rho[i], o.rho_rel_lfs * kGap / 2, 0.003) << "point " << i;
+    if (is_under_sheet_b(s.points[i])) { EXPECT_NEAR(rho[i], o.rho_rel_lfs * kGap / 2, 0.003) << "point " << i; }
     // From x = 1 to 1.6 the bound rises by 0.3 * 0.6 = 0.18 > rho_max.
-    if (is_far_from_sheet_b(s.points[i])) EXPECT_DOUBLE_EQ(rho[i], o.rho_max) << "point " << i;
+    if (is_far_from_sheet_b(s.points[i])) { EXPECT_DOUBLE_EQ(rho[i], o.rho_max) << "point " << i; }
   }
   // Lipschitz over every pair closer than 0.05 (a superset of the graph's short edges is not
   // guaranteed, but paths through the dense kNN graph are nearly straight here).
   for (std::size_t i = 0; i < s.points.size(); i += 37)
     for (std::size_t j = 0; j < s.points.size(); ++j) {
       const double d = std::sqrt(CGAL::squared_distance(s.points[i], s.points[j]));
-      if (d < 0.05) EXPECT_LE(std::abs(rho[i] - rho[j]), 1.5 * o.lipschitz * d + 1e-12) << i << " " << j;
+      if (d < 0.05) { EXPECT_LE(std::abs(rho[i] - rho[j]), 1.5 * o.lipschitz * d + 1e-12) << i << " " << j; }
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -176,4 +177,34 @@ TEST(Envelope, automatic_rho_is_at_least_four_times_the_noise) {
   EXPECT_GE(env.rho, 4.0 * env.noise * (1 - 1e-12));
   const double sigma = 0.0025 * surfaces::bbox_diagonal(*surfaces::make_builtin("trefoil-ribbon"));
   EXPECT_NEAR(env.noise, 0.8 * sigma, 0.1 * sigma);
+}
+
+// 300 samples of the cylinder are sparse for rho = 0.173 (half the capped reach): the gaps
+// between 1% of them and their 8th neighbours are wider than 2.5 rho, so the automatic rho
+// rises to bridge them, to the 99th percentile of r_k over 2.5, computed here by brute force.
+TEST(Envelope, automatic_rho_bridges_the_gaps_of_a_sparse_input) {
+  const auto s = exact_samples("cylinder", 300);
+  std::vector<double> rk;
+  for (const auto& p : s.points) {
+    std::vector<double> d;
+    for (const auto& q : s.points) d.push_back(std::sqrt(CGAL::squared_distance(p, q)));
+    std::sort(d.begin(), d.end());
+    rk.push_back(d[8]);  // d[0] is the point itself
+  }
+  std::sort(rk.begin(), rk.end());
+  const double expected = rk[static_cast<std::size_t>(0.99 * rk.size())] / 2.5;
+  ASSERT_GT(expected, 0.5 * 0.1 * std::sqrt(12.0));
+  const auto e = envelope::sample_envelope(s);
+  EXPECT_TRUE(e.is_rho_gap_bound);
+  EXPECT_DOUBLE_EQ(e.rho, expected);
+  ASSERT_FALSE(e.warnings.empty());
+  EXPECT_EQ(e.warnings[0].rfind("rho raised from 0.173", 0), 0u) << e.warnings[0];
+  EXPECT_NE(e.warnings[0].find("to bridge the gaps between 99% of the samples and their 8th neighbours"), std::string::npos);
+
+  envelope::EnvelopeOptions off;
+  off.gap_quantile = 0;
+  EXPECT_NEAR(envelope::sample_envelope(s, off).rho, 0.5 * 0.1 * std::sqrt(12.0), 1e-3);
+  // Dense samples keep half the reach.
+  const auto dense = envelope::sample_envelope(exact_samples("cylinder", 5000));
+  EXPECT_FALSE(dense.is_rho_gap_bound);
 }
