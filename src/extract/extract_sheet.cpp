@@ -162,7 +162,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
   // After a cut: the removed bands or balls leave crumbs between them (dropped) and, around
   // seams, pinholes where a band barely touched the sheet (fanned when `fill_pinholes`); with
-  // fill_cut_holes every hole away from the boundary curves is closed by a smooth disc.
+  // fill_cut_holes every hole away from the boundary curves is closed by a smooth disc, once
+  // the pieces the cut has separated from every boundary curve are dropped.
   // Returns the text the cut's warning ends with.
   auto tidy_after_cut = [&](bool fill_pinholes) -> std::string {
     result.stats.components_dropped +=
@@ -170,8 +171,10 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     if (fill_pinholes && options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
     std::size_t closed = 0;
-    if (options.fill_cut_holes)
+    if (options.fill_cut_holes) {
+      result.stats.components_dropped += drop_pieces_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
       closed = fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
+    }
     result.stats.cut_holes_filled += closed;
     make_manifold(sheet);
     if (closed == 0) return "";

@@ -235,22 +235,56 @@ std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
   return filled;
 }
 
+namespace {
+
+// Whether at least half the loop's vertices lie within max_distance of a boundary point.
+bool runs_along_boundary(const TriangleMesh& m, const std::vector<Index>& loop, const NearestIndex& boundary,
+                         double max_distance) {
+  if (boundary.empty()) return false;
+  std::size_t near = 0;
+  for (Index v : loop) near += boundary.nearest(m.vertices[v]).second <= max_distance;
+  return 2 * near >= loop.size();
+}
+
+}  // namespace
+
 std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
                                           double max_distance, HoleFill fill) {
   const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
   const NearestIndex nearest(boundary_points);
   std::size_t filled = 0;
   for (const auto& loop : topo.boundary_loops) {
-    if (loop.vertices.size() < 3) continue;
-    std::size_t near = 0;
-    if (!nearest.empty())
-      for (Index v : loop.vertices)
-        if (nearest.nearest(t.mesh.vertices[v]).second <= max_distance) ++near;
-    if (2 * near >= loop.vertices.size()) continue;
+    if (loop.vertices.size() < 3 || runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance)) continue;
     if (fill == HoleFill::Fan || !fill_with_patch(t, loop.vertices)) fill_with_fan(t, loop.vertices);
     ++filled;
   }
   return filled;
+}
+
+std::size_t drop_pieces_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
+                                           double max_distance) {
+  if (boundary_points.empty() || t.mesh.triangles.empty()) return 0;
+  const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
+  topology::UnionFind uf(g.faces.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
+      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
+  std::vector<std::uint32_t> component_of_vertex(t.mesh.vertices.size(), 0);
+  for (std::uint32_t f = 0; f < t.mesh.triangles.size(); ++f)
+    for (Index v : t.mesh.triangles[f]) component_of_vertex[v] = uf.find(f);
+  // Per component root: 1 it has a border loop, 3 one of them runs along a boundary curve.
+  std::vector<char> status(t.mesh.triangles.size(), 0);
+  const NearestIndex nearest(boundary_points);
+  for (const auto& loop : topology::analyze_topology(t.mesh, {.weld_identical_vertices = false}).boundary_loops)
+    status[component_of_vertex[loop.vertices.front()]] |=
+        runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance) ? 3 : 1;
+  std::size_t dropped = 0;
+  for (char s : status) dropped += s == 1;
+  if (dropped == 0) return 0;
+  std::vector<char> remove(t.mesh.triangles.size(), 0);
+  for (std::uint32_t f = 0; f < remove.size(); ++f) remove[f] = status[uf.find(f)] == 1;
+  remove_faces(t, remove);
+  return dropped;
 }
 
 void compact_vertices(TaggedMesh& t) {

@@ -65,6 +65,13 @@ bool fill_with_patch(TaggedMesh& tagged, const std::vector<Index>& loop);
 std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
                                           double max_distance, HoleFill fill = HoleFill::Fan);
 
+/// Remove the components that have border loops but none that runs along a boundary curve
+/// (the rule of fill_loops_away_from_boundary): pieces a cut has separated from the rest,
+/// which closing their holes would turn into closed shells. Nothing when `boundary_points` is
+/// empty (a closed surface, where every hole is a cut's). Returns the number removed.
+std::size_t drop_pieces_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
+                                           double max_distance);
+
 /// Fill boundary loops shorter than `max_length` with a fan around their centroid. Returns
 /// the number of loops filled.
 std::size_t fill_short_loops(TaggedMesh& tagged, double max_length);

@@ -233,3 +233,24 @@ TEST(FillWithPatch, refuses_a_loop_that_passes_a_vertex_twice) {
   EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
   EXPECT_EQ(m.mesh.vertices.size(), original.mesh.vertices.size());
 }
+
+// A piece that a cut separated from the rest has only loops away from the boundary curves:
+// closing them would make a closed shell, so it goes; the plane, whose rim runs along the
+// boundary curve, stays. Without boundary curves (a closed surface) nothing is dropped.
+TEST(DropPiecesAwayFromBoundary, drops_a_floating_piece_and_keeps_the_plane) {
+  TaggedMesh m = grid_plane([](int, int) { return false; });
+  const std::size_t plane_faces = m.mesh.triangles.size();
+  // A 1 x 1 square of two triangles 5 above the plane: its loop is 5 from the rim.
+  const auto base = static_cast<Index>(m.mesh.vertices.size());
+  for (const auto& p : {Point3(2, 2, 5), Point3(3, 2, 5), Point3(3, 3, 5), Point3(2, 3, 5)}) m.mesh.vertices.push_back(p);
+  m.mesh.triangles.push_back({base, base + 1, base + 2});
+  m.mesh.triangles.push_back({base, base + 2, base + 3});
+  m.face_dot.assign(m.mesh.triangles.size(), -1.0);
+  TaggedMesh closed_surface = m;
+  EXPECT_EQ(drop_pieces_away_from_boundary(closed_surface, {}, 0.05), 0u);
+  EXPECT_EQ(closed_surface.mesh.triangles.size(), plane_faces + 2);
+  EXPECT_EQ(drop_pieces_away_from_boundary(m, plane_rim_points(), 0.05), 1u);
+  EXPECT_EQ(m.mesh.triangles.size(), plane_faces);
+  EXPECT_EQ(m.face_dot.size(), plane_faces);
+  for (const auto& f : m.mesh.triangles) EXPECT_EQ(m.mesh.vertices[f[0]].z(), 0.0);
+}
