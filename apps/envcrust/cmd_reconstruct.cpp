@@ -80,13 +80,17 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_flag("--rho-adaptive",
                [&cmd](std::int64_t) { cmd.options.envelope.rho_mode = envelope::RhoMode::Adaptive; },
                "Vary rho with the local feature size: rho(p) = alpha lfs(p), clamped to "
-               "[--rho-min-rel * rho, rho] (rho = --rho), Lipschitz --rho-lipschitz");
+               "[--rho-min-rel * rho, rho] (rho = --rho), Lipschitz --rho-lipschitz, and raised where the "
+               "samples are sparse to bridge their local gaps");
   sub.add_option("--rho-alpha", cmd.options.envelope.adaptive_rho_rel_lfs,
                  "Adaptive rho: rho(p) = alpha * local reach")->capture_default_str();
   sub.add_option("--rho-min-rel", cmd.options.envelope.adaptive_min_rel_rho,
                  "Adaptive rho: smallest rho as a fraction of rho")->capture_default_str();
   sub.add_option("--rho-lipschitz", cmd.options.envelope.adaptive_lipschitz,
                  "Adaptive rho: Lipschitz constant along M")->capture_default_str();
+  sub.add_flag("--rho-shrink-only", [&cmd](std::int64_t) { cmd.options.envelope.adaptive_gap_floor = false; },
+               "Adaptive rho: only shrink with the local feature size (by default it also grows where the "
+               "samples are sparse, to bridge their local gaps, also beyond --rho)");
   sub.add_option("--boundary-out", cmd.boundary_output,
                  "Also write the boundary curves used (detected or read), all vertices as one point "
                  "file (.xyz/.ply; normals = outward conormals)");

@@ -98,10 +98,13 @@ struct AdaptiveRhoOptions {
 
 /// rho(p) = clamp(alpha lfs(p), rho_min, rho_max), then made L-Lipschitz by a Dijkstra pass
 /// rho(p) <- min_q rho(q) + L |p - q| over the kNN graph (it only lowers values; the result
-/// stays >= rho_min). @param lfs one value per point (infinite allowed).
+/// stays >= rho_min). With a `floor` (one value per point, e.g. what the local sample gaps
+/// need), rho is then raised to the smallest L-Lipschitz function above the floor where that
+/// is larger (also beyond rho_max): the result stays L-Lipschitz.
+/// @param lfs one value per point (infinite allowed).
 /// @throws InvalidInput on mismatched sizes; InvalidOptions on an option out of range.
 std::vector<double> adaptive_rho(const std::vector<Point3>& points, const std::vector<double>& lfs,
-                                 const AdaptiveRhoOptions& options = {});
+                                 const AdaptiveRhoOptions& options = {}, const std::vector<double>& floor = {});
 
 /// How rho is chosen along M.
 enum class RhoMode : std::uint8_t {
@@ -184,6 +187,11 @@ struct EnvelopeOptions {
   /// Adaptive mode: alpha and L of adaptive_rho (METHOD.md §2: 0.5 and 0.3).
   double adaptive_rho_rel_lfs = 0.5;
   double adaptive_lipschitz = 0.3;
+  /// Adaptive mode: rho also grows with the local spacing, to at least the median over each
+  /// sample's 9 nearest of r_k / 2.5 (the gap the envelope must bridge there; adaptive_rho's
+  /// floor), also beyond the uniform rho: an input whose density varies keeps its envelope
+  /// closed where it is sparse. False: rho only shrinks with the local feature size.
+  bool adaptive_gap_floor = true;
 };
 
 /// The sampled envelope.

@@ -93,11 +93,45 @@ std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const Lo
   return out;
 }
 
+namespace {
+
+using Graph = std::vector<std::vector<std::pair<std::size_t, double>>>;
+
+// values(p) <- min over graph paths of values(q) + L d(p, q): the largest L-Lipschitz function
+// below `values` on the graph. Dijkstra from every sample at once; the result is independent
+// of visiting order (it is the unique fixpoint). Works for negative values too.
+void lower_to_lipschitz(const Graph& graph, const Graph& reverse, std::vector<double>& values, double lipschitz) {
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  for (std::size_t i = 0; i < values.size(); ++i) queue.emplace(values[i], i);
+  std::vector<char> done(values.size(), 0);
+  while (!queue.empty()) {
+    const auto [value, i] = queue.top();
+    queue.pop();
+    if (done[i] || value > values[i]) continue;
+    done[i] = 1;
+    auto relax = [&](std::size_t j, double d) {
+      const double candidate = value + lipschitz * d;
+      if (candidate < values[j]) {
+        values[j] = candidate;
+        queue.emplace(candidate, j);
+      }
+    };
+    for (const auto& [j, d] : graph[i]) relax(j, d);
+    for (const auto& [j, d] : reverse[i]) relax(j, d);
+  }
+}
+
+}  // namespace
+
 std::vector<double> adaptive_rho(const std::vector<Point3>& points, const std::vector<double>& lfs,
-                                 const AdaptiveRhoOptions& options) {
+                                 const AdaptiveRhoOptions& options, const std::vector<double>& floor) {
   if (points.size() != lfs.size())
     throw InvalidInput("adaptive rho: " + std::to_string(points.size()) + " points but " +
                        std::to_string(lfs.size()) + " feature sizes");
+  if (!floor.empty() && floor.size() != points.size())
+    throw InvalidInput("adaptive rho: " + std::to_string(points.size()) + " points but " +
+                       std::to_string(floor.size()) + " floor values");
   require(options.rho_rel_lfs > 0 && options.rho_rel_lfs < 1, "AdaptiveRhoOptions::rho_rel_lfs", options.rho_rel_lfs);
   require(options.rho_max > 0 && std::isfinite(options.rho_max), "AdaptiveRhoOptions::rho_max", options.rho_max);
   require(options.rho_min >= 0 && options.rho_min <= options.rho_max, "AdaptiveRhoOptions::rho_min", options.rho_min);
@@ -107,39 +141,27 @@ std::vector<double> adaptive_rho(const std::vector<Point3>& points, const std::v
   std::vector<double> rho(n);
   for (std::size_t i = 0; i < n; ++i)
     rho[i] = std::clamp(options.rho_rel_lfs * lfs[i], options.rho_min, options.rho_max);
-  if (n < 2 || options.lipschitz == 0) return rho;
-  // Dijkstra from every sample at once: rho(p) <- min_q rho(q) + L d(p, q) along graph paths.
-  // The result is independent of visiting order (it is the unique fixpoint).
-  const NearestIndex index(points);
-  const auto k = static_cast<unsigned>(std::min<std::size_t>(n, static_cast<std::size_t>(options.neighbors) + 1));
-  std::vector<std::vector<std::pair<std::size_t, double>>> graph(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) graph[i] = index.nearest(points[i], k);
-  });
-  // The kNN relation is not symmetric: add the reverse edges so that a small value spreads
-  // to every sample that sees it or is seen by it.
-  std::vector<std::vector<std::pair<std::size_t, double>>> reverse(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (const auto& [j, d] : graph[i]) reverse[j].emplace_back(i, d);
-  using Entry = std::pair<double, std::size_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  for (std::size_t i = 0; i < n; ++i) queue.emplace(rho[i], i);
-  std::vector<char> done(n, 0);
-  while (!queue.empty()) {
-    const auto [value, i] = queue.top();
-    queue.pop();
-    if (done[i] || value > rho[i]) continue;
-    done[i] = 1;
-    auto relax = [&](std::size_t j, double d) {
-      const double candidate = value + options.lipschitz * d;
-      if (candidate < rho[j]) {
-        rho[j] = candidate;
-        queue.emplace(candidate, j);
-      }
-    };
-    for (const auto& [j, d] : graph[i]) relax(j, d);
-    for (const auto& [j, d] : reverse[i]) relax(j, d);
+  std::vector<double> raised = floor;
+  if (n >= 2 && options.lipschitz > 0) {
+    const NearestIndex index(points);
+    const auto k = static_cast<unsigned>(std::min<std::size_t>(n, static_cast<std::size_t>(options.neighbors) + 1));
+    Graph graph(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) graph[i] = index.nearest(points[i], k);
+    });
+    // The kNN relation is not symmetric: add the reverse edges so that a small value spreads
+    // to every sample that sees it or is seen by it.
+    Graph reverse(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (const auto& [j, d] : graph[i]) reverse[j].emplace_back(i, d);
+    lower_to_lipschitz(graph, reverse, rho, options.lipschitz);
+    // The smallest L-Lipschitz function above the floor: -(the largest below -floor).
+    for (double& f : raised) f = -f;
+    lower_to_lipschitz(graph, reverse, raised, options.lipschitz);
+    for (double& f : raised) f = -f;
   }
+  // The maximum of two L-Lipschitz functions is L-Lipschitz.
+  for (std::size_t i = 0; i < raised.size(); ++i) rho[i] = std::max(rho[i], raised[i]);
   return rho;
 }
 

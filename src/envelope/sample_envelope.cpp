@@ -61,8 +61,27 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
 // Adaptive mode: rho per sample from the local reach, between the floor and rho_max. Pairs
 // shorter than the automatic reach's minimum pair length count only when they cross to a
 // facing sheet (LocalReachOptions::crossing_min_cos).
+// The gap the envelope must bridge around each sample: the median over its 9 nearest
+// samples (itself included) of r_k / 2.5, so a stray sample's wide r_k does not count.
+std::vector<double> gap_floor(const std::vector<Point3>& points, const std::vector<double>& rk) {
+  std::vector<double> floor(points.size(), 0.0);
+  const NearestIndex index(points);
+  const unsigned k = static_cast<unsigned>(std::min<std::size_t>(9, points.size()));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
+    std::vector<double> values;
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      values.clear();
+      for (const auto& [j, d] : index.nearest(points[i], k)) values.push_back(rk[j]);
+      const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+      std::nth_element(values.begin(), mid, values.end());
+      floor[i] = *mid / kGapsPerRho;
+    }
+  });
+  return floor;
+}
+
 std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptions& o, double rho_max,
-                              double noise, double spacing) {
+                              double noise, double spacing, const std::vector<double>& floor) {
   LocalReachOptions reach;
   reach.search_radius = 2.0 * rho_max / o.adaptive_rho_rel_lfs;
   reach.min_pair_distance = o.reach_min_pair_rel_spacing * spacing;
@@ -72,7 +91,7 @@ std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptio
   a.lipschitz = o.adaptive_lipschitz;
   a.rho_max = rho_max;
   a.rho_min = std::min(rho_max, std::max(o.adaptive_min_rel_rho * rho_max, o.min_rho_rel_noise * noise));
-  return adaptive_rho(surface.points, lfs, a);
+  return adaptive_rho(surface.points, lfs, a, floor);
 }
 
 }  // namespace
@@ -134,9 +153,13 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
 
   std::vector<double> rho(surface.points.size(), out.rho);
   if (options.rho_mode == RhoMode::Adaptive) {
-    out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing);
+    const std::vector<double> floor = options.adaptive_gap_floor
+                                          ? gap_floor(surface.points, out.input_neighbour_distance)
+                                          : std::vector<double>{};
+    out.local_rho = local_rho(surface, options, out.rho, out.noise, average_spacing, floor);
     rho = out.local_rho;
     out.rho_min = *std::min_element(rho.begin(), rho.end());
+    out.rho = *std::max_element(rho.begin(), rho.end());  // above the uniform rho where sparse
   }
   std::vector<std::vector<double>> rim_rho;
   if (options.rho_mode == RhoMode::Adaptive && !surface.boundary.empty()) {

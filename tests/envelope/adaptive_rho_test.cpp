@@ -90,6 +90,44 @@ TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
     }
 }
 
+// A floor of 0.2 beyond x = 1.8 (a sparse stretch needing a wider envelope) lifts rho there
+// above rho_max, falls off at slope L towards it, and leaves rho alone farther away.
+TEST(AdaptiveRho, a_floor_lifts_rho_to_the_smallest_lipschitz_function_above_it) {
+  const auto s = two_close_sheets();
+  envelope::LocalReachOptions lo;
+  lo.search_radius = 1.0;
+  lo.min_pair_distance = 0.2;
+  const auto lfs = envelope::estimate_local_reach(s, lo);
+  envelope::AdaptiveRhoOptions o;
+  o.rho_min = 0.01;
+  o.rho_max = 0.1;
+  std::vector<double> floor(s.points.size(), 0.0);
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    if (s.points[i].x() > 1.8) floor[i] = 0.2;
+  const auto plain = envelope::adaptive_rho(s.points, lfs, o);
+  const auto rho = envelope::adaptive_rho(s.points, lfs, o, floor);
+  ASSERT_EQ(rho.size(), s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const double x = s.points[i].x();
+    EXPECT_GE(rho[i], floor[i]);
+    EXPECT_GE(rho[i], plain[i]);
+    if (x > 1.8) { EXPECT_DOUBLE_EQ(rho[i], 0.2) << "point " << i; }
+    // 0.1 below the floor's value at slope 0.3 along paths: 0.1 / 0.3 = 0.33 from x = 1.8.
+    if (x < 1.8 - 0.4) { EXPECT_DOUBLE_EQ(rho[i], plain[i]) << "point " << i; }
+  }
+  for (std::size_t i = 0; i < s.points.size(); i += 37)
+    for (std::size_t j = 0; j < s.points.size(); ++j) {
+      const double d = std::sqrt(CGAL::squared_distance(s.points[i], s.points[j]));
+      if (d < 0.05) { EXPECT_LE(std::abs(rho[i] - rho[j]), 1.5 * o.lipschitz * d + 1e-12) << i << " " << j; }
+    }
+  try {
+    envelope::adaptive_rho(s.points, lfs, o, {1.0});
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "adaptive rho: 9000 points but 1 floor values");
+  }
+}
+
 TEST(AdaptiveRho, rejects_rho_min_above_rho_max) {
   envelope::AdaptiveRhoOptions o;
   o.rho_min = 2.0;
