@@ -3,6 +3,8 @@
 #include "envcrust/errors.h"
 #include "envcrust/nearest_index.h"
 
+#include "neighbour_median.h"
+
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Search_traits_3.h>
@@ -77,20 +79,7 @@ std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const Lo
   });
   // Median over the nearest samples: one stray pair (noise, a wrong normal) does not make a
   // hole in rho, while a real gap is seen by all samples around it.
-  const auto k = static_cast<unsigned>(std::min<std::size_t>(n, static_cast<std::size_t>(options.smoothing_neighbors)));
-  const NearestIndex index(pts);
-  std::vector<double> out(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
-    std::vector<double> values;
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      values.clear();
-      for (const auto& [j, d] : index.nearest(pts[i], k)) values.push_back(best[j]);
-      const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-      std::nth_element(values.begin(), mid, values.end());
-      out[i] = *mid;
-    }
-  });
-  return out;
+  return median_over_neighbours(pts, best, static_cast<unsigned>(options.smoothing_neighbors));
 }
 
 namespace {

@@ -6,6 +6,7 @@
 
 #include "envelope_candidates.h"
 #include "input_tree.h"
+#include "neighbour_median.h"
 #include "poisson_disk.h"
 
 #include <tbb/parallel_for.h>
@@ -58,28 +59,17 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   check(o.adaptive_lipschitz >= 0 && o.adaptive_lipschitz < 1, "adaptive_lipschitz", o.adaptive_lipschitz);
 }
 
-// Adaptive mode: rho per sample from the local reach, between the floor and rho_max. Pairs
-// shorter than the automatic reach's minimum pair length count only when they cross to a
-// facing sheet (LocalReachOptions::crossing_min_cos).
 // The gap the envelope must bridge around each sample: the median over its 9 nearest
 // samples (itself included) of r_k / 2.5, so a stray sample's wide r_k does not count.
 std::vector<double> gap_floor(const std::vector<Point3>& points, const std::vector<double>& rk) {
-  std::vector<double> floor(points.size(), 0.0);
-  const NearestIndex index(points);
-  const unsigned k = static_cast<unsigned>(std::min<std::size_t>(9, points.size()));
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
-    std::vector<double> values;
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      values.clear();
-      for (const auto& [j, d] : index.nearest(points[i], k)) values.push_back(rk[j]);
-      const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-      std::nth_element(values.begin(), mid, values.end());
-      floor[i] = *mid / kGapsPerRho;
-    }
-  });
+  std::vector<double> floor = median_over_neighbours(points, rk, 9);
+  for (double& f : floor) f /= kGapsPerRho;
   return floor;
 }
 
+// Adaptive mode: rho per sample from the local reach, between the floor and rho_max. Pairs
+// shorter than the automatic reach's minimum pair length count only when they cross to a
+// facing sheet (LocalReachOptions::crossing_min_cos).
 std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptions& o, double rho_max,
                               double noise, double spacing, const std::vector<double>& floor) {
   LocalReachOptions reach;

@@ -36,6 +36,15 @@ envelope::SurfaceSamples two_close_sheets() {
 bool is_under_sheet_b(const Point3& p) { return p.z() == 0.0 && p.x() > 0.1 && p.x() < 0.9 && p.y() > 0.1 && p.y() < 0.9; }
 bool is_far_from_sheet_b(const Point3& p) { return p.z() == 0.0 && p.x() > 1.6; }
 
+// The local reach of the two sheets, with pairs shorter than the gap admitted only when they
+// cross to the facing sheet.
+std::vector<double> sheets_local_reach(const envelope::SurfaceSamples& s) {
+  envelope::LocalReachOptions o;
+  o.search_radius = 1.0;
+  o.min_pair_distance = 0.2;
+  return envelope::estimate_local_reach(s, o);
+}
+
 }  // namespace
 
 TEST(LocalReach, facing_sheets_read_half_their_gap_and_open_parts_read_far_more) {
@@ -65,10 +74,7 @@ TEST(LocalReach, rejects_a_non_positive_search_radius) {
 
 TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
   const auto s = two_close_sheets();
-  envelope::LocalReachOptions lo;
-  lo.search_radius = 1.0;
-  lo.min_pair_distance = 0.2;
-  const auto lfs = envelope::estimate_local_reach(s, lo);
+  const auto lfs = sheets_local_reach(s);
   envelope::AdaptiveRhoOptions o;
   o.rho_min = 0.01;
   o.rho_max = 0.1;
@@ -94,10 +100,7 @@ TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
 // above rho_max, falls off at slope L towards it, and leaves rho alone farther away.
 TEST(AdaptiveRho, a_floor_lifts_rho_to_the_smallest_lipschitz_function_above_it) {
   const auto s = two_close_sheets();
-  envelope::LocalReachOptions lo;
-  lo.search_radius = 1.0;
-  lo.min_pair_distance = 0.2;
-  const auto lfs = envelope::estimate_local_reach(s, lo);
+  const auto lfs = sheets_local_reach(s);
   envelope::AdaptiveRhoOptions o;
   o.rho_min = 0.01;
   o.rho_max = 0.1;
