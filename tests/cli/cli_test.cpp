@@ -267,6 +267,26 @@ TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "envcrust: usage error: --rho must be 'auto' or a positive number (got '-2')\n");
   EXPECT_FALSE(fs::exists(path("x.ply")));
+  const auto q = run_envcrust("reconstruct builtin:cylinder --rho-gap-quantile 2 -o " + path("x.ply"));
+  EXPECT_EQ(q.exit_code, 2);
+  EXPECT_NE(q.err.find("--rho-gap-quantile"), std::string::npos) << q.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
+// 300 samples of the cylinder are too sparse for half its reach: the automatic rho bridges
+// their gaps instead (reported), and the open cylinder still comes out as an annulus.
+TEST_F(CliTest, reconstruct_sparse_input_gets_a_rho_that_bridges_its_gaps) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -n 300 -o " + path("c.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["envelope"]["rho_from"], "gaps");
+  EXPECT_GT(j["envelope"]["rho"].get<double>(), 0.18);
+  EXPECT_EQ(j["warnings"][0].get<std::string>().rfind("rho raised from 0.17", 0), 0u) << j["warnings"][0];
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  const auto off = run_envcrust("reconstruct builtin:cylinder -n 300 --rho-gap-quantile 0 -o " + path("c.ply") + " --json");
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(nlohmann::json::parse(off.out)["envelope"]["rho_from"], "reach");
 }
 
 // issue 5: rho too small for the sampling leaves holes everywhere; the error says which rho
