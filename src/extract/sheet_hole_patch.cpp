@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <iterator>
 #include <tuple>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -42,15 +41,15 @@ bool triangulate_loop(const std::vector<Point3>& points, Patch& patch) {
 // Whether an edge of the patch between two loop vertices exists in the sheet already (the loop
 // passes twice near one face, or a vertex twice): the patch would put a third face on it.
 bool reuses_sheet_edge(const TaggedMesh& t, const std::vector<Index>& loop, const Patch& patch) {
-  std::unordered_map<Index, Index> position;  // sheet vertex -> index in the loop
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    if (!position.emplace(loop[i], static_cast<Index>(i)).second) return true;  // a pinched loop
+  std::unordered_set<Index> on_loop;
+  for (Index v : loop)
+    if (!on_loop.insert(v).second) return true;  // a pinched loop
   std::unordered_set<std::uint64_t> sheet_edges;
   auto key = [](Index a, Index b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); };
   for (const auto& f : t.mesh.triangles) {
     for (int k = 0; k < 3; ++k) {
       const Index a = f[k], b = f[(k + 1) % 3];
-      if (position.count(a) && position.count(b)) sheet_edges.insert(key(a, b));
+      if (on_loop.count(a) && on_loop.count(b)) sheet_edges.insert(key(a, b));
     }
   }
   for (auto e : patch.edges()) {
