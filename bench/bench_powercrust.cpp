@@ -48,7 +48,7 @@ struct Measurement {
   double seconds[8] = {};  // sample, delaunay, poles, power diagram, labeling, crust, shape, total
   double dt_sequential = 0, dt_parallel = 0;
   double stage_peak_mb[6] = {};  // peak RSS within each stage, in the order of seconds[1..6]
-  std::size_t poles = 0, hidden = 0, faces = 0;
+  std::size_t poles = 0, hidden = 0, faces = 0, delaunay_cells = 0;
   long euler = 0;
   int closed = -1, manifold = -1;
 };
@@ -122,6 +122,7 @@ Measurement run_power_crust(const std::vector<Point3>& points, const Args& args)
   m.poles = s.poles;
   m.hidden = s.hidden_poles;
   m.faces = s.crust_faces;
+  m.delaunay_cells = s.delaunay_cells;
   if (args.check) {
     topology::TopologyOptions options;
     options.weld_identical_vertices = false;  // the crust's vertices are named by cell
@@ -200,9 +201,11 @@ int main(int argc, char** argv) {
                   pc.seconds[7] / base.dt_sequential, pc.seconds[7] / base.dt_parallel, pc_mb,
                   pc_mb / (static_cast<double>(n) / 1e6), pc.poles, pc.hidden, topo);
       std::printf("        peak MB per stage: delaunay %.0f, poles %.0f, power diagram %.0f, labeling %.0f, "
-                  "crust %.0f, power shape %.0f; bare DTs %.0f\n",
+                  "crust %.0f, power shape %.0f; bare DTs %.0f; Delaunay cells %zu (%.1f per sample, "
+                  "%zu bytes each)\n",
                   pc.stage_peak_mb[0], pc.stage_peak_mb[1], pc.stage_peak_mb[2], pc.stage_peak_mb[3],
-                  pc.stage_peak_mb[4], pc.stage_peak_mb[5], base_mb);
+                  pc.stage_peak_mb[4], pc.stage_peak_mb[5], base_mb, pc.delaunay_cells,
+                  static_cast<double>(pc.delaunay_cells) / static_cast<double>(n), sizeof(ParallelDt::Cell));
       std::fflush(stdout);
     }
   }
