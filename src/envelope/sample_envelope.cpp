@@ -127,7 +127,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
       std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
       const double bridging = rk[at] / kGapsPerRho;
       if (bridging > out.rho) {
-        out.warnings.push_back("rho raised from " + format(out.rho) + " (half the estimated reach) to " +
+        out.warnings.push_back("rho raised from " + format(out.rho) +
+                               (out.is_rho_noise_bound ? " (" + format(options.min_rho_rel_noise) + " times the noise)"
+                                                         : std::string(" (half the estimated reach)")) + " to " +
                                format(bridging) + " to bridge the gaps between " +
                                format(100.0 * options.gap_quantile) +
                                "% of the samples and their 8th neighbours; above half the reach the envelope "
