@@ -160,15 +160,15 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (repair.faces_dropped > 0)
     result.warnings.push_back(std::to_string(repair.faces_dropped) +
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
-  // After a cut: the removed bands or balls leave crumbs between them (dropped) and, around
-  // seams, pinholes where a band barely touched the sheet (fanned when `fill_pinholes`); with
-  // fill_cut_holes every hole away from the boundary curves is closed by a smooth disc, once
-  // the pieces the cut has separated from every boundary curve are dropped.
-  // Returns the text the cut's warning ends with.
-  auto tidy_after_cut = [&](bool fill_pinholes) -> std::string {
+  // After a cut: the removed bands or balls leave crumbs between them (dropped) and
+  // pinholes where a band or ball barely touched the sheet (fanned, as every hole below the
+  // envelope's resolution is); with fill_cut_holes every hole away from the boundary curves
+  // is closed by a smooth disc, once the pieces the cut has separated from every boundary
+  // curve are dropped. Returns the text the cut's warning ends with.
+  auto tidy_after_cut = [&]() -> std::string {
     result.stats.components_dropped +=
         filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
-    if (fill_pinholes && options.fill_loops_shorter_than_rel_rho > 0)
+    if (options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
     std::size_t closed = 0;
     if (options.fill_cut_holes) {
@@ -176,7 +176,15 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       closed = fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
     }
     result.stats.cut_holes_filled += closed;
-    make_manifold(sheet);
+    // The repair can open pinholes of its own where it removes faces or splits a vertex:
+    // fanned too.
+    const ManifoldRepairStats repaired = make_manifold(sheet);
+    if (repaired.faces_dropped + repaired.non_manifold_faces_removed + repaired.degenerate_faces_removed +
+                repaired.vertices_split > 0 &&
+        options.fill_loops_shorter_than_rel_rho > 0) {
+      result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+      make_manifold(sheet);
+    }
     if (closed == 0) return "";
     return "; " + std::to_string(closed) + " hole" + (closed == 1 ? "" : "s") + " closed with a disc";
   };
@@ -185,7 +193,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.orientation_seams = cut.seams;
     result.stats.faces_removed_at_seams = cut.faces_removed;
     if (cut.seams > 0) {
-      const std::string closed = tidy_after_cut(true);
+      const std::string closed = tidy_after_cut();
       result.warnings.push_back("the sheet was non-orientable: " + std::to_string(cut.faces_removed) +
                                 " faces removed around " + std::to_string(cut.seams) + " orientation seam" +
                                 (cut.seams == 1 ? "" : "s") +
@@ -197,7 +205,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.handle_balls = cut.balls;
     result.stats.faces_removed_at_handles = cut.faces_removed;
     if (cut.balls > 0) {
-      const std::string closed = tidy_after_cut(false);
+      const std::string closed = tidy_after_cut();
       std::ostringstream w;
       w << "the sheet was not a disc in " << cut.balls << " ball" << (cut.balls == 1 ? "" : "s") << " of radius "
         << options.cut_handles_rel_rho << " rho: " << cut.faces_removed << " faces removed there" << closed;
