@@ -36,6 +36,16 @@ envelope::SurfaceSamples two_close_sheets() {
 bool is_under_sheet_b(const Point3& p) { return p.z() == 0.0 && p.x() > 0.1 && p.x() < 0.9 && p.y() > 0.1 && p.y() < 0.9; }
 bool is_far_from_sheet_b(const Point3& p) { return p.z() == 0.0 && p.x() > 1.6; }
 
+// Lipschitz over every pair closer than 0.05 (a superset of the graph's short edges is not
+// guaranteed, but paths through the dense kNN graph are nearly straight here).
+void expect_lipschitz(const std::vector<Point3>& points, const std::vector<double>& rho, double lipschitz) {
+  for (std::size_t i = 0; i < points.size(); i += 37)
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const double d = std::sqrt(CGAL::squared_distance(points[i], points[j]));
+      if (d < 0.05) { EXPECT_LE(std::abs(rho[i] - rho[j]), 1.5 * lipschitz * d + 1e-12) << i << " " << j; }
+    }
+}
+
 // The local reach of the two sheets, with pairs shorter than the gap admitted only when they
 // cross to the facing sheet.
 std::vector<double> sheets_local_reach(const envelope::SurfaceSamples& s) {
@@ -87,13 +97,7 @@ TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
     // From x = 1 to 1.6 the bound rises by 0.3 * 0.6 = 0.18 > rho_max.
     if (is_far_from_sheet_b(s.points[i])) { EXPECT_DOUBLE_EQ(rho[i], o.rho_max) << "point " << i; }
   }
-  // Lipschitz over every pair closer than 0.05 (a superset of the graph's short edges is not
-  // guaranteed, but paths through the dense kNN graph are nearly straight here).
-  for (std::size_t i = 0; i < s.points.size(); i += 37)
-    for (std::size_t j = 0; j < s.points.size(); ++j) {
-      const double d = std::sqrt(CGAL::squared_distance(s.points[i], s.points[j]));
-      if (d < 0.05) { EXPECT_LE(std::abs(rho[i] - rho[j]), 1.5 * o.lipschitz * d + 1e-12) << i << " " << j; }
-    }
+  expect_lipschitz(s.points, rho, o.lipschitz);
 }
 
 // A floor of 0.2 beyond x = 1.8 (a sparse stretch needing a wider envelope) lifts rho there
@@ -118,11 +122,7 @@ TEST(AdaptiveRho, a_floor_lifts_rho_to_the_smallest_lipschitz_function_above_it)
     // 0.1 below the floor's value at slope 0.3 along paths: 0.1 / 0.3 = 0.33 from x = 1.8.
     if (x < 1.8 - 0.4) { EXPECT_DOUBLE_EQ(rho[i], plain[i]) << "point " << i; }
   }
-  for (std::size_t i = 0; i < s.points.size(); i += 37)
-    for (std::size_t j = 0; j < s.points.size(); ++j) {
-      const double d = std::sqrt(CGAL::squared_distance(s.points[i], s.points[j]));
-      if (d < 0.05) { EXPECT_LE(std::abs(rho[i] - rho[j]), 1.5 * o.lipschitz * d + 1e-12) << i << " " << j; }
-    }
+  expect_lipschitz(s.points, rho, o.lipschitz);
   try {
     envelope::adaptive_rho(s.points, lfs, o, {1.0});
     FAIL() << "no exception";
