@@ -35,6 +35,18 @@ std::size_t remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
 
 namespace {
 
+// Per face, a face id standing for its connected component (faces joined across edges).
+std::vector<std::uint32_t> component_roots(const TriangleMesh& m) {
+  const auto g = topology::build_mesh_graph(m.triangles, m.vertices.size());
+  topology::UnionFind uf(g.faces.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
+      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
+  std::vector<std::uint32_t> root(g.faces.size());
+  for (std::uint32_t f = 0; f < root.size(); ++f) root[f] = uf.find(f);
+  return root;
+}
+
 double face_area(const TriangleMesh& m, const std::array<Index, 3>& f) {
   return std::sqrt(Kernel::Triangle_3(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]).squared_area());
 }
@@ -148,13 +160,9 @@ std::size_t split_pinched_vertices(TaggedMesh& t) {
 std::size_t filter_components(TaggedMesh& t, const NearestIndex& nearest,
                               const std::vector<double>& max_distance, double min_area_fraction) {
   if (t.mesh.triangles.empty()) return 0;
-  const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
-  topology::UnionFind uf(g.faces.size());
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
-      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
+  const std::vector<std::uint32_t> face_root = component_roots(t.mesh);
   std::map<std::uint32_t, std::vector<std::uint32_t>> components;
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f) components[uf.find(f)].push_back(f);
+  for (std::uint32_t f = 0; f < face_root.size(); ++f) components[face_root[f]].push_back(f);
   double total_area = 0.0;
   std::vector<double> areas;
   std::vector<double> medians;
@@ -178,7 +186,7 @@ std::size_t filter_components(TaggedMesh& t, const NearestIndex& nearest,
     areas.push_back(area);
     total_area += area;
   }
-  std::vector<char> remove(g.faces.size(), 0);
+  std::vector<char> remove(face_root.size(), 0);
   std::size_t dropped = 0;
   std::size_t index = 0;
   for (const auto& [root, faces] : components) {
@@ -264,14 +272,10 @@ std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point
 std::size_t drop_pieces_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
                                            double max_distance) {
   if (boundary_points.empty() || t.mesh.triangles.empty()) return 0;
-  const auto g = topology::build_mesh_graph(t.mesh.triangles, t.mesh.vertices.size());
-  topology::UnionFind uf(g.faces.size());
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
-      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
+  const std::vector<std::uint32_t> root = component_roots(t.mesh);
   std::vector<std::uint32_t> component_of_vertex(t.mesh.vertices.size(), 0);
   for (std::uint32_t f = 0; f < t.mesh.triangles.size(); ++f)
-    for (Index v : t.mesh.triangles[f]) component_of_vertex[v] = uf.find(f);
+    for (Index v : t.mesh.triangles[f]) component_of_vertex[v] = root[f];
   // Per component root: 1 it has a border loop, 3 one of them runs along a boundary curve.
   std::vector<char> status(t.mesh.triangles.size(), 0);
   const NearestIndex nearest(boundary_points);
@@ -282,7 +286,7 @@ std::size_t drop_pieces_away_from_boundary(TaggedMesh& t, const std::vector<Poin
   for (char s : status) dropped += s == 1;
   if (dropped == 0) return 0;
   std::vector<char> remove(t.mesh.triangles.size(), 0);
-  for (std::uint32_t f = 0; f < remove.size(); ++f) remove[f] = status[uf.find(f)] == 1;
+  for (std::uint32_t f = 0; f < remove.size(); ++f) remove[f] = status[root[f]] == 1;
   remove_faces(t, remove);
   return dropped;
 }

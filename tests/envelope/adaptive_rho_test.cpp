@@ -46,6 +46,14 @@ void expect_lipschitz(const std::vector<Point3>& points, const std::vector<doubl
     }
 }
 
+// Adaptive rho options clamped to [0.01, 0.1], defaults otherwise.
+envelope::AdaptiveRhoOptions clamped_to_0_01_and_0_1() {
+  envelope::AdaptiveRhoOptions o;
+  o.rho_min = 0.01;
+  o.rho_max = 0.1;
+  return o;
+}
+
 // The local reach of the two sheets, with pairs shorter than the gap admitted only when they
 // cross to the facing sheet.
 std::vector<double> sheets_local_reach(const envelope::SurfaceSamples& s) {
@@ -85,9 +93,7 @@ TEST(LocalReach, rejects_a_non_positive_search_radius) {
 TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
   const auto s = two_close_sheets();
   const auto lfs = sheets_local_reach(s);
-  envelope::AdaptiveRhoOptions o;
-  o.rho_min = 0.01;
-  o.rho_max = 0.1;
+  const envelope::AdaptiveRhoOptions o = clamped_to_0_01_and_0_1();
   const auto rho = envelope::adaptive_rho(s.points, lfs, o);
   ASSERT_EQ(rho.size(), s.points.size());
   for (std::size_t i = 0; i < s.points.size(); ++i) {
@@ -105,9 +111,7 @@ TEST(AdaptiveRho, follows_the_gap_within_its_clamps_and_is_lipschitz) {
 TEST(AdaptiveRho, a_floor_lifts_rho_to_the_smallest_lipschitz_function_above_it) {
   const auto s = two_close_sheets();
   const auto lfs = sheets_local_reach(s);
-  envelope::AdaptiveRhoOptions o;
-  o.rho_min = 0.01;
-  o.rho_max = 0.1;
+  const envelope::AdaptiveRhoOptions o = clamped_to_0_01_and_0_1();
   std::vector<double> floor(s.points.size(), 0.0);
   for (std::size_t i = 0; i < s.points.size(); ++i)
     if (s.points[i].x() > 1.8) floor[i] = 0.2;
