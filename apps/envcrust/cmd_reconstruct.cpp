@@ -28,10 +28,15 @@ struct ReconstructCommand {
   bool no_analysis = false;
   bool use_remesh = false;
   remesh::RemeshOptions remesh;  // used with --remesh
+  std::string orientable = "auto";    // --orientable: auto, yes or no
+  std::optional<double> cut_handles;  // --cut-handles; unset: by input (scan_cut_defaults)
   BuiltinSampling sampling;
   pipeline::ReconstructOptions options;
   CommonFlags common;
 };
+
+// --cut-handles for point files and meshes unless given: the radius that served the scans.
+constexpr double kScanCutHandlesRelRho = 1.5;
 
 std::optional<double> parse_rho(const std::string& text) {
   if (text == "auto") return std::nullopt;
@@ -120,8 +125,9 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
 }
 
 // What to try when a scan (a point file or a mesh, not a built-in surface) comes out with
-// cross-caps or handles: the usual cause is a part thinner than 2 rho or sampled too sparsely,
-// which the cuts repair when the scanned surface is known to be orientable and locally a disc.
+// cross-caps or handles the cuts did not remove: the usual cause is a part thinner than 2 rho
+// or sampled too sparsely, which the cuts repair when the scanned surface is known to be
+// orientable and locally a disc. A mesh that is itself non-orientable gets no such hint.
 std::vector<std::string> scan_hints(const LoadedSurface& loaded, const ReconstructCommand& cmd,
                                     const analysis::AnalysisReport& report) {
   const auto& sheet = cmd.options.sheet;
@@ -134,25 +140,47 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
     (c.is_orientable ? handles : cross_caps) += *c.genus;
   }
   std::vector<std::string> hints;
-  if (cross_caps > 0 && !sheet.cut_to_orientable)
+  if (cross_caps > 0 && !sheet.cut_to_orientable && loaded.is_orientable.value_or(true))
     hints.push_back("the result is non-orientable (" + std::to_string(cross_caps) + " cross-cap" +
-                    (cross_caps == 1 ? "" : "s") + "): if the input scans an orientable surface, --orientable removes them and "
-                    "closes the holes, and --cut-handles 1.5 also removes handles at thin parts");
-  else if (handles > 0 && sheet.cut_handles_rel_rho == 0)
+                    (cross_caps == 1 ? "" : "s") + "): if the input scans an orientable surface, --orientable removes " +
+                    (cross_caps == 1 ? "it" : "them") + " and closes the holes");
+  if (handles > 0 && sheet.cut_handles_rel_rho == 0)
     hints.push_back("the result has genus " + std::to_string(handles) +
                     ": if the scanned surface has no handles at the scale of rho, --cut-handles 1.5 removes them "
                     "and closes the holes");
+  else if (handles > 0 && cross_caps == 0) {
+    std::ostringstream h;
+    h << "the result has genus " << handles << " after the cuts at " << sheet.cut_handles_rel_rho
+      << " rho: if the scanned surface has fewer handles, --cut-handles " << 2 * sheet.cut_handles_rel_rho
+      << " also removes the ones up to twice as wide";
+    hints.push_back(h.str());
+  }
   return hints;
 }
 
-void run_reconstruct(ReconstructCommand& cmd) {
-  const bool cuts = cmd.options.sheet.cut_to_orientable || cmd.options.sheet.cut_handles_rel_rho > 0;
-  if (cuts && (cmd.options.method != pipeline::Method::Envelope || cmd.options.extraction != pipeline::Extraction::Sheet))
+// The topology cuts of the medial sheet, as asked or by default for the input: a scan (point
+// file or mesh) is cut where the sheet is not a disc at 1.5 rho (at rho <= reach/2 every such
+// ball of the true surface is a disc, so what fails there is a defect), and cut to an
+// orientable sheet when the input is an orientable mesh; built-in samples are left as the
+// method makes them (the experiments measure the method itself).
+void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
+  auto& sheet = cmd.options.sheet;
+  const bool is_scan = loaded.source != "builtin";
+  sheet.cut_to_orientable = cmd.orientable == "yes" || (cmd.orientable == "auto" && loaded.is_orientable.value_or(false));
+  sheet.cut_handles_rel_rho = cmd.cut_handles.value_or(is_scan ? kScanCutHandlesRelRho : 0.0);
+  if (cmd.options.method == pipeline::Method::Envelope && cmd.options.extraction == pipeline::Extraction::Sheet) return;
+  if (cmd.orientable == "yes" || cmd.cut_handles.value_or(0) > 0)
     throw UsageError("--orientable and --cut-handles apply to the medial sheet (--method envelope --extract sheet)");
+  sheet.cut_to_orientable = false;
+  sheet.cut_handles_rel_rho = 0;
+}
+
+void run_reconstruct(ReconstructCommand& cmd) {
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   if (cmd.use_remesh) cmd.options.remesh = cmd.remesh;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
+  choose_sheet_cuts(cmd, loaded);
   // Estimated normals scatter the per-sample reach values: take the 5th percentile.
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
@@ -188,6 +216,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   }
   j["seconds"] = {{"envelope", result.seconds.envelope}, {"power_crust", result.seconds.power_crust},
                   {"extraction", result.seconds.extraction}, {"remesh", result.seconds.remesh}};
+  if (loaded.is_orientable) j["input_is_orientable"] = *loaded.is_orientable;
   if (result.sheet_stats) {
     const auto& s = *result.sheet_stats;
     j["sheet"] = {{"delaunay_edges", s.delaunay_edges}, {"crossing_edges", s.crossing_edges},
@@ -204,7 +233,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"faces_removed_at_seams", s.faces_removed_at_seams},
                   {"handle_balls", s.handle_balls},
                   {"faces_removed_at_handles", s.faces_removed_at_handles},
-                  {"cut_holes_filled", s.cut_holes_filled}};
+                  {"cut_holes_filled", s.cut_holes_filled},
+                  {"cut_to_orientable", cmd.options.sheet.cut_to_orientable},
+                  {"cut_handles_rel_rho", cmd.options.sheet.cut_handles_rel_rho}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;
@@ -308,18 +339,20 @@ void register_reconstruct(CLI::App& app) {
                   "sheet (default: clean 2-manifold) or powershape (the paper's raw power shape)")
       ->transform(CLI::CheckedTransformer(extractions, CLI::ignore_case));
   sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
-  sub->add_flag("--orientable", cmd->options.sheet.cut_to_orientable,
+  sub->add_flag("--orientable{yes}", cmd->orientable,
                 "The surface is orientable (a scan of a solid): where the sheet comes out non-orientable, remove it within "
-                "--orientable-cut rho of each orientation seam, and close the hole with a disc (reported)");
+                "--orientable-cut rho of each orientation seam, and close the hole with a disc (reported). "
+                "--orientable=auto (default): yes when the input is an orientable mesh, else no; --orientable=no: never")
+      ->check(CLI::IsMember({"auto", "yes", "no"}));
   sub->add_option("--orientable-cut", cmd->options.sheet.orientable_cut_rel_rho,
                   "With --orientable: half-width of the band removed around a seam, in rho")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  sub->add_option("--cut-handles", cmd->options.sheet.cut_handles_rel_rho,
-                  "Remove every geodesic ball of this radius (in rho) where the result is not a disc once its own "
-                  "holes are capped, and close each hole with a disc: handles and cross-caps at thin, sparsely "
-                  "sampled parts (reported; 0: off)")
-      ->capture_default_str()
+  sub->add_option_function<double>(
+         "--cut-handles", [cmd](double k) { cmd->cut_handles = k; },
+         "Remove every geodesic ball of this radius (in rho) where the result is not a disc once its own "
+         "holes are capped, and close each hole with a disc: handles and cross-caps at thin, sparsely "
+         "sampled parts (reported; 0: off; default: 1.5 for point files and meshes, 0 for built-in surfaces)")
       ->check(CLI::NonNegativeNumber);
   sub->add_flag("--keep-cut-holes", [cmd](std::int64_t) { cmd->options.sheet.fill_cut_holes = false; },
                 "With --orientable or --cut-handles: leave the holes the cuts make open instead of closing them "

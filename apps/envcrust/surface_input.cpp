@@ -10,6 +10,7 @@
 #include "envcrust/mesh.h"
 #include "envcrust/normals.h"
 #include "envcrust/surfaces.h"
+#include "envcrust/topology.h"
 
 #include <cmath>
 #include <optional>
@@ -32,6 +33,7 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
   } catch (const InvalidInput& e) {
     throw InvalidInput(spec + ": " + e.what());
   }
+  out.is_orientable = topology::analyze_topology(mesh).is_orientable;  // a manifold, checked above
   std::vector<bool> used(mesh.vertices.size(), false);
   for (const auto& t : mesh.triangles)
     for (Index v : t) used[v] = true;

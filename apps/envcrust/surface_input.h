@@ -6,6 +6,7 @@
 #include "envcrust/envelope.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct LoadedSurface {
   envelope::SurfaceSamples samples;
   std::string source;                 ///< "builtin", "points", "mesh"
   bool are_normals_estimated = false; ///< normals came from PCA, not from the data
+  /// Whether the input itself is orientable, where it says: a mesh (every component
+  /// orientable); unknown for point files and built-in samples.
+  std::optional<bool> is_orientable;
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
 };
 

@@ -11,28 +11,26 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace envcrust::extract {
 namespace {
 
-// Seeds: one vertex per occupied cell of a grid of side `cell`, so every vertex lies within
-// sqrt(3) cell (in space, hence about as far along the sheet) of a seed.
-std::vector<Index> grid_seeds(const TriangleMesh& mesh, double cell) {
-  std::unordered_map<std::uint64_t, Index> first;
-  auto coord = [&](double x) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(x / cell)) & 0x1fffff); };
-  std::vector<char> used(mesh.vertices.size(), 0);
+// Seeds such that every vertex lies within `spacing` of one along the sheet: a greedy cover,
+// each vertex not yet covered becomes a seed and covers its geodesic ball. About
+// area / (0.6 spacing^2) seeds, a seventh of what a grid with the same guarantee in space
+// needs (cells of side spacing / sqrt(3)), and the guarantee holds along the sheet.
+std::vector<Index> covering_seeds(const TriangleMesh& mesh, const MeshAdjacency& a, double spacing) {
+  std::vector<char> covered(mesh.vertices.size(), 1);
   for (const auto& t : mesh.triangles)
-    for (const Index v : t) used[v] = 1;
-  for (Index v = 0; v < mesh.vertices.size(); ++v) {
-    if (!used[v]) continue;
-    const Point3& p = mesh.vertices[v];
-    first.emplace(coord(p.x()) << 42 | coord(p.y()) << 21 | coord(p.z()), v);
-  }
+    for (const Index v : t) covered[v] = 0;
+  GeodesicBall ball(mesh.vertices.size());
   std::vector<Index> seeds;
-  seeds.reserve(first.size());
-  for (const auto& [key, v] : first) seeds.push_back(v);
-  std::sort(seeds.begin(), seeds.end());
+  for (Index v = 0; v < mesh.vertices.size(); ++v) {
+    if (covered[v]) continue;
+    seeds.push_back(v);
+    ball.grow(a, std::span(&v, 1), spacing);
+    for (const Index w : ball.reached()) covered[w] = 1;
+  }
   return seeds;
 }
 
@@ -121,9 +119,9 @@ HandleCutStats cut_local_handles(TaggedMesh& tagged, double radius) {
   if (mesh.triangles.empty()) return stats;
   const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
   const MeshAdjacency a = mesh_adjacency(mesh, g);
-  // Seeds half a radius apart: a defect smaller than about half the radius lies wholly
-  // inside the ball of some seed.
-  const std::vector<Index> seeds = grid_seeds(mesh, 0.5 * radius / std::sqrt(3.0));
+  // Every vertex within half a radius of a seed: a defect smaller than about half the radius
+  // lies wholly inside the ball of some seed.
+  const std::vector<Index> seeds = covering_seeds(mesh, a, 0.5 * radius);
   std::vector<char> flagged(seeds.size(), 0);
   tbb::enumerable_thread_specific<BallScratch> scratch([&] { return BallScratch(mesh.vertices.size(), g.edges.size()); });
   // A ball that is not a disc is confirmed on the ball three times as large: around a finger

@@ -116,8 +116,9 @@ struct HandleCutStats {
   std::size_t faces_removed = 0;
 };
 
-/// Remove the places where the sheet is not a disc at scale `radius`: around seeds spread
-/// `radius` / 2 apart, the faces within `radius` (along the mesh) form a disc or half-disc,
+/// Remove the places where the sheet is not a disc at scale `radius`: around seeds such that
+/// every vertex lies within `radius` / 2 of one along the mesh, the faces within `radius`
+/// (along the mesh) form a disc or half-disc,
 /// once every hole of the sheet lying wholly inside is capped; where they do not (a handle, a
 /// cross-cap, or a tube thinner than the ball) and the ball of three times the radius is not a
 /// disc either (around a finger thinner than the ball but shorter than about twice its radius

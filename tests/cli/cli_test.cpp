@@ -151,6 +151,10 @@ TEST_F(CliTest, reconstruct_keeps_the_open_cylinder_open) {
   EXPECT_EQ(a["is_orientable"], true);
   EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
   EXPECT_GT(j["envelope"]["rho"].get<double>(), 0.0);
+  // Built-in samples get no topology cuts by default (the experiments measure the method).
+  EXPECT_EQ(j["sheet"]["cut_to_orientable"], false);
+  EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 0.0);
+  EXPECT_FALSE(j.contains("input_is_orientable"));
   // The written file holds the same surface.
   const auto again = run_envcrust("analyze " + path("c.ply") + " --json");
   EXPECT_EQ(nlohmann::json::parse(again.out)["boundary_loops"], 2);
@@ -356,6 +360,74 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   EXPECT_EQ(a["is_manifold"], true);
   // Away from the boundary the sheet follows the samples closely.
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+  // A point file is a scan: the handle cut is on by default and finds nothing to cut here;
+  // its orientability is unknown, so no orientation cut.
+  EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
+  EXPECT_EQ(j["sheet"]["handle_balls"], 0);
+  EXPECT_EQ(j["sheet"]["cut_to_orientable"], false);
+}
+
+// A point file of a Moebius strip comes out non-orientable, as it should; since a point file
+// does not say whether the scanned surface is orientable, the hint names the flag that would
+// cut the cross-cap out if it were.
+TEST_F(CliTest, reconstruct_a_non_orientable_point_cloud_with_a_hint) {
+  ASSERT_EQ(run_envcrust("sample moebius -n 10000 --seed 3 -q -o " + path("m.xyz")).exit_code, 0);
+  const auto r = run_envcrust("reconstruct " + path("m.xyz") + " -r builtin:moebius -o " + path("m.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_EQ(a["is_orientable"], false);
+  EXPECT_EQ(j["sheet"]["handle_balls"], 0) << "the strip is a disc at 1.5 rho everywhere";
+  ASSERT_EQ(j["hints"].size(), 1u);
+  EXPECT_EQ(j["hints"][0], "the result is non-orientable (1 cross-cap): if the input scans an orientable surface, "
+                           "--orientable removes it and closes the holes");
+}
+
+// A point file of a torus keeps its handle (every ball of 1.5 rho is a disc on it); the hint
+// says which --cut-handles would also remove wider handles, should the scan have fewer.
+TEST_F(CliTest, reconstruct_a_torus_point_cloud_keeps_its_handle_with_a_hint) {
+  ASSERT_EQ(run_envcrust("sample torus -n 5000 --seed 2 -q -o " + path("t.xyz")).exit_code, 0);
+  const auto r =
+      run_envcrust("reconstruct " + path("t.xyz") + " --no-boundary -r builtin:torus -o " + path("t.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 0);
+  EXPECT_EQ(j["sheet"]["handle_balls"], 0);
+  EXPECT_LT(j["analysis"]["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+  ASSERT_EQ(j["hints"].size(), 1u);
+  EXPECT_EQ(j["hints"][0], "the result has genus 1 after the cuts at 1.5 rho: if the scanned surface has fewer "
+                           "handles, --cut-handles 3 also removes the ones up to twice as wide");
+}
+
+// An orientable mesh says its surface is orientable: the sheet is cut to an orientable one by
+// default (--orientable=auto), and --orientable=no or --cut-handles 0 turn the cuts off.
+TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
+  ASSERT_EQ(run_envcrust("sample cylinder --mesh -q -o " + path("c.off")).exit_code, 0);
+  const auto r = run_envcrust("reconstruct " + path("c.off") + " -r builtin:cylinder -o " + path("c.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["input_is_orientable"], true);
+  EXPECT_EQ(j["sheet"]["cut_to_orientable"], true);
+  EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
+  EXPECT_EQ(j["sheet"]["orientation_seams"], 0);
+  EXPECT_EQ(j["sheet"]["handle_balls"], 0);
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  EXPECT_EQ(j["analysis"]["is_orientable"], true);
+  EXPECT_LT(j["analysis"]["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+  const auto off = run_envcrust("reconstruct " + path("c.off") + " --orientable=no --cut-handles 0 --no-analysis -o " +
+                                path("c2.ply") + " --json");
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  const auto k = nlohmann::json::parse(off.out);
+  EXPECT_EQ(k["sheet"]["cut_to_orientable"], false);
+  EXPECT_EQ(k["sheet"]["cut_handles_rel_rho"], 0.0);
+  const auto bad = run_envcrust("reconstruct " + path("c.off") + " --orientable=maybe -o " + path("x.ply"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--orientable: maybe not in {auto,yes,no}"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(path("x.ply")));
 }
 
 // Issue #5: the boundary of a point cloud can be given instead of detected.
@@ -432,11 +504,20 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   EXPECT_EQ(a["boundary_loops"], 1);
   EXPECT_EQ(a["is_orientable"], false);
   EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
-  // A non-orientable result from a file could be a scan gone wrong: the hint names the flags.
-  ASSERT_EQ(j["hints"].size(), 1u);
-  EXPECT_EQ(j["hints"][0], "the result is non-orientable (1 cross-cap): if the input scans an orientable surface, "
-                           "--orientable removes them and closes the holes, and --cut-handles 1.5 also removes "
-                           "handles at thin parts");
+  // The input mesh is non-orientable itself: no orientation cut by default, and no hint.
+  EXPECT_EQ(j["input_is_orientable"], false);
+  EXPECT_EQ(j["sheet"]["cut_to_orientable"], false);
+  EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);  // a scan's default; every ball is a disc here
+  EXPECT_EQ(j["sheet"]["handle_balls"], 0);
+  EXPECT_TRUE(j["hints"].empty()) << j["hints"].dump();
+  // --orientable=yes overrides what the mesh says: the strip is cut across into a disc.
+  const auto forced = run_envcrust("reconstruct " + path("m.off") + " --orientable=yes -o " + path("d.ply") + " --json");
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  const auto f = nlohmann::json::parse(forced.out);
+  EXPECT_EQ(f["sheet"]["orientation_seams"], 1);
+  EXPECT_EQ(f["analysis"]["is_orientable"], true);
+  EXPECT_EQ(f["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(f["analysis"]["boundary_loops"], 1);
   const auto text = run_envcrust("reconstruct " + path("m.off") + " --no-analysis -o " + path("r.ply"));
   EXPECT_EQ(text.out.find("hint:"), std::string::npos) << "no analysis, no hint";
 }
