@@ -29,7 +29,7 @@ struct ReconstructCommand {
   bool use_remesh = false;
   remesh::RemeshOptions remesh;  // used with --remesh
   std::string orientable = "auto";    // --orientable: auto, yes or no
-  std::optional<double> cut_handles;  // --cut-handles; unset: by input (scan_cut_defaults)
+  std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_sheet_cuts)
   BuiltinSampling sampling;
   pipeline::ReconstructOptions options;
   CommonFlags common;
