@@ -72,6 +72,13 @@ struct TopologyOptions {
 /// the mesh has 30 vertices").
 MeshTopology analyze_topology(const TriangleMesh& mesh, const TopologyOptions& options = {});
 
+/// The boundary loops alone, as analyze_topology(mesh, {.weld_identical_vertices = false})
+/// traces them (the same vertices, lengths and loop order) but not oriented: is_oriented is
+/// false and component -1. For the cleaning steps of large meshes that only need each loop's
+/// vertices and length (it skips the duplicate, component, fan and orientation counts).
+/// @throws InvalidInput as analyze_topology does for a face index out of range.
+std::vector<BoundaryLoop> boundary_loops(const TriangleMesh& mesh);
+
 /// Flip triangles so that faces sharing an edge run it in opposite directions: every
 /// orientable piece (faces joined through two-face edges) comes out consistently wound, a
 /// closed one facing outward (positive signed volume); a non-orientable piece is wound

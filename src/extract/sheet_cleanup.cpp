@@ -233,9 +233,8 @@ void fill_with_fan(TaggedMesh& t, const std::vector<Index>& loop) {
 }  // namespace
 
 std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
-  const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
   std::size_t filled = 0;
-  for (const auto& loop : topo.boundary_loops) {
+  for (const auto& loop : topology::boundary_loops(t.mesh)) {
     if (loop.length >= max_length || loop.vertices.size() < 3) continue;
     fill_with_fan(t, loop.vertices);
     ++filled;
@@ -258,10 +257,9 @@ bool runs_along_boundary(const TriangleMesh& m, const std::vector<Index>& loop, 
 
 std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
                                           double max_distance, HoleFill fill) {
-  const auto topo = topology::analyze_topology(t.mesh, {.weld_identical_vertices = false});
   const NearestIndex nearest(boundary_points);
   std::size_t filled = 0;
-  for (const auto& loop : topo.boundary_loops) {
+  for (const auto& loop : topology::boundary_loops(t.mesh)) {
     if (loop.vertices.size() < 3 || runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance)) continue;
     if (fill == HoleFill::Fan || !fill_with_patch(t, loop.vertices)) fill_with_fan(t, loop.vertices);
     ++filled;
@@ -279,7 +277,7 @@ std::size_t drop_pieces_away_from_boundary(TaggedMesh& t, const std::vector<Poin
   // Per component root: 1 it has a border loop, 3 one of them runs along a boundary curve.
   std::vector<char> status(t.mesh.triangles.size(), 0);
   const NearestIndex nearest(boundary_points);
-  for (const auto& loop : topology::analyze_topology(t.mesh, {.weld_identical_vertices = false}).boundary_loops)
+  for (const auto& loop : topology::boundary_loops(t.mesh))
     status[component_of_vertex[loop.vertices.front()]] |=
         runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance) ? 3 : 1;
   std::size_t dropped = 0;

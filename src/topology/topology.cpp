@@ -141,4 +141,18 @@ MeshTopology analyze_topology(const TriangleMesh& input, const TopologyOptions& 
   return out;
 }
 
+std::vector<BoundaryLoop> boundary_loops(const TriangleMesh& mesh) {
+  check_indices(mesh);
+  std::vector<std::array<Index, 3>> faces;
+  faces.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles)
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) faces.push_back(t);
+  const MeshGraph g = build_mesh_graph(std::move(faces), mesh.vertices.size());
+  const std::vector<std::uint32_t> one_component(g.faces.size(), 0);
+  const Orientation unoriented{{}, {false}};
+  std::vector<BoundaryLoop> loops = trace_boundary_loops(g, mesh.vertices, one_component, unoriented);
+  for (auto& loop : loops) loop.component = -1;
+  return loops;
+}
+
 }  // namespace envcrust::topology

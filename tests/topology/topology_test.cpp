@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numbers>
 
 using namespace envcrust;
@@ -225,4 +226,30 @@ TEST(Topology, out_of_range_index_is_reported) {
   } catch (const InvalidInput& e) {
     EXPECT_STREQ(e.what(), "face 1 has vertex index 7, but the mesh has 3 vertices");
   }
+}
+
+// boundary_loops gives analyze_topology's loops (same vertices, up to the walking direction,
+// and lengths) without the rest of the analysis: on an annulus, a Moebius band, a square with
+// a degenerate face added, and a closed torus (none).
+TEST(BoundaryLoops, are_the_loops_analyze_topology_traces) {
+  auto with_degenerate = fixtures::square(5);
+  with_degenerate.triangles.push_back({0, 0, 1});  // a repeated vertex: ignored by both
+  for (const auto& m : {fixtures::open_cylinder(24, 6), fixtures::moebius(40, 4), with_degenerate, fixtures::torus()}) {
+    const auto expected = analyze_topology(m, {.weld_identical_vertices = false}).boundary_loops;
+    const auto loops = topology::boundary_loops(m);
+    ASSERT_EQ(loops.size(), expected.size());
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      auto a = loops[i].vertices, b = expected[i].vertices;
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      EXPECT_EQ(a, b);
+      EXPECT_DOUBLE_EQ(loops[i].length, expected[i].length);
+      EXPECT_FALSE(loops[i].is_oriented);
+      EXPECT_EQ(loops[i].component, -1);
+    }
+  }
+  TriangleMesh bad;
+  bad.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  bad.triangles = {{0, 1, 5}};
+  EXPECT_THROW(topology::boundary_loops(bad), InvalidInput);
 }
