@@ -340,7 +340,8 @@ void register_reconstruct(CLI::App& app) {
       ->transform(CLI::CheckedTransformer(extractions, CLI::ignore_case));
   sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
   sub->add_flag("--orientable{yes}", cmd->orientable,
-                "The surface is orientable (a scan of a solid): where the sheet comes out non-orientable, remove it within "
+                "--orientable alone = --orientable=yes: the surface is orientable (a scan of a solid): where the sheet comes "
+                "out non-orientable, remove it within "
                 "--orientable-cut rho of each orientation seam, and close the hole with a disc (reported). "
                 "--orientable=auto (default): yes when the input is an orientable mesh, else no; --orientable=no: never")
       ->check(CLI::IsMember({"auto", "yes", "no"}));
