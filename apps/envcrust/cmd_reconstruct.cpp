@@ -9,9 +9,13 @@
 #include "envcrust/io.h"
 #include "envcrust/pipeline.h"
 
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace envcrust::cli {
@@ -37,6 +41,11 @@ struct ReconstructCommand {
 
 // --cut-handles for point files and meshes unless given: the radius that served the scans.
 constexpr double kScanCutHandlesRelRho = 1.5;
+// Detected boundary loops narrower than this many local spacings (and than half the widest)
+// are named in a hint: --boundary-min-width drops them if they are sampling gaps. A gap
+// narrower than 3 spacings is no unsampled stripe (its loop is an arc closed on itself).
+constexpr double kNarrowLoopWidth = 8.0;
+constexpr double kStripeMinWidth = 3.0;
 
 std::optional<double> parse_rho(const std::string& text) {
   if (text == "auto") return std::nullopt;
@@ -124,6 +133,41 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   return j;
 }
 
+// Detected boundary loops much narrower than the widest one may be unsampled stripes rather
+// than holes of the surface (the foot's sole: two loops about 5 spacings wide, the ankle 13):
+// which --boundary-min-width would drop them. Only when the detection dropped none by width,
+// and no loop is thinner than a stripe can be.
+std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
+  const auto& widths = loaded.detected_loop_widths;
+  if (widths.size() < 2 || loaded.min_loop_width > 0) return std::nullopt;
+  const double widest = *std::max_element(widths.begin(), widths.end());
+  std::vector<std::size_t> narrow;
+  double narrow_max = 0.0;
+  for (std::size_t i = 0; i < widths.size(); ++i)
+    if (widths[i] >= kStripeMinWidth && widths[i] < kNarrowLoopWidth && widths[i] < 0.5 * widest) {
+      narrow.push_back(i);
+      narrow_max = std::max(narrow_max, widths[i]);
+    }
+  if (narrow.empty()) return std::nullopt;
+  // The width that drops them would also drop any thinner loop, which is no stripe but a
+  // boundary the detector could not close (the lion head's neck): then no advice.
+  const double min_width = std::floor(narrow_max) + 1;
+  for (const double w : widths)
+    if (w < kStripeMinWidth) return std::nullopt;
+  std::ostringstream h;
+  h << std::setprecision(2) << std::fixed;
+  h << "detected boundary loop" << (narrow.size() == 1 ? " " : "s ");
+  for (std::size_t k = 0; k < narrow.size(); ++k) h << (k == 0 ? "" : k + 1 == narrow.size() ? " and " : ", ") << narrow[k];
+  h << (narrow.size() == 1 ? " is " : " are ");
+  for (std::size_t k = 0; k < narrow.size(); ++k)
+    h << (k == 0 ? "" : k + 1 == narrow.size() ? " and " : ", ") << std::setprecision(1) << widths[narrow[k]];
+  h << " local spacings wide (the widest " << widest << "): if "
+    << (narrow.size() == 1 ? "it is an unsampled stripe rather than a hole" : "they are unsampled stripes rather than holes")
+    << " of the surface, --boundary-min-width " << std::setprecision(0) << min_width << " drops "
+    << (narrow.size() == 1 ? "it" : "them");
+  return h.str();
+}
+
 // What to try when a scan (a point file or a mesh, not a built-in surface) comes out with
 // cross-caps or handles the cuts did not remove: the usual cause is a part thinner than 2 rho
 // or sampled too sparsely, which the cuts repair when the scanned surface is known to be
@@ -155,6 +199,7 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
       << " also removes the ones up to twice as wide";
     hints.push_back(h.str());
   }
+  if (const auto stripes = narrow_loops_hint(loaded)) hints.push_back(*stripes);
   return hints;
 }
 
@@ -217,6 +262,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   j["seconds"] = {{"envelope", result.seconds.envelope}, {"power_crust", result.seconds.power_crust},
                   {"extraction", result.seconds.extraction}, {"remesh", result.seconds.remesh}};
   if (loaded.is_orientable) j["input_is_orientable"] = *loaded.is_orientable;
+  if (!loaded.detected_loop_widths.empty()) j["input_boundary_widths"] = loaded.detected_loop_widths;
   if (result.sheet_stats) {
     const auto& s = *result.sheet_stats;
     j["sheet"] = {{"delaunay_edges", s.delaunay_edges}, {"crossing_edges", s.crossing_edges},

@@ -146,6 +146,8 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
       out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                           std::to_string(detection.dropped_loops) + " short loops dropped)");
       out.samples.boundary = std::move(detection.curves);
+      out.detected_loop_widths = std::move(detection.loop_widths);
+      out.min_loop_width = sampling.boundary.min_loop_width;
       for (auto& w : detection.warnings) out.notes.push_back(std::move(w));
     }
   } catch (const DegenerateInput& e) {

@@ -34,6 +34,10 @@ struct LoadedSurface {
   /// Whether the input itself is orientable, where it says: a mesh (every component
   /// orientable); unknown for point files and built-in samples.
   std::optional<bool> is_orientable;
+  /// Point files whose boundary was detected: each curve's width in local spacings
+  /// (BoundaryDetection::loop_widths), and the --boundary-min-width the detection used.
+  std::vector<double> detected_loop_widths;
+  double min_loop_width = 0.0;
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
 };
 

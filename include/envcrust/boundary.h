@@ -90,6 +90,9 @@ struct BoundaryDetection {
   std::vector<std::string> warnings;
   /// The average spacing s of the cloud (k 6), the unit of the options.
   double spacing = 0.0;
+  /// Per curve: its width 4 * area / perimeter in local spacings (the median 6th-neighbour
+  /// distance of its points), the measure BoundaryOptions::min_loop_width is compared with.
+  std::vector<double> loop_widths;
 };
 
 /// Detect the boundary of the surface sampled by `points` with unit normal lines (one per

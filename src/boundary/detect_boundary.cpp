@@ -151,8 +151,9 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     Polyline curve = detail::resample_closed(line.points, s);
     curve = detail::smooth_closed(curve, options.smoothing_half_window);
     curve = detail::resample_closed(curve, output_spacing);
-    if (drop_small && options.min_loop_width > 0 &&
-        loop_width(curve) < options.min_loop_width * local_spacing(points, index, component)) {
+    const double local = local_spacing(points, index, component);
+    const double width = local > 0 ? loop_width(curve) / local : 0.0;
+    if (drop_small && options.min_loop_width > 0 && local > 0 && width < options.min_loop_width) {
       ++out.dropped_loops;
       continue;
     }
@@ -175,6 +176,7 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
       }
     }
     out.curves.push_back(std::move(framed));
+    out.loop_widths.push_back(width);
     for (const std::size_t i : component) {
       out.is_boundary_point[i] = true;
       out.conormals[i] = candidates.conormals[i];

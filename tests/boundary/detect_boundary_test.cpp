@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -234,6 +236,13 @@ TEST(DetectBoundary, MinLoopWidthDropsNarrowSamplingGapsAndKeepsHoles) {
   EXPECT_GT(all.curves.size(), 2u);     // the slot's edges come out as loops too
   EXPECT_EQ(wide.curves.size(), 2u);    // the square's outline and the round hole
   EXPECT_EQ(wide.dropped_loops, all.dropped_loops + (all.curves.size() - 2));
+  // loop_widths reports the measure the option compares with: the kept loops are at least
+  // 7 spacings wide, and exactly the loops below 7 went.
+  ASSERT_EQ(all.loop_widths.size(), all.curves.size());
+  ASSERT_EQ(wide.loop_widths.size(), wide.curves.size());
+  for (const double w : wide.loop_widths) EXPECT_GE(w, 7.0);
+  const auto narrow = std::count_if(all.loop_widths.begin(), all.loop_widths.end(), [](double w) { return w < 7.0; });
+  EXPECT_EQ(static_cast<std::size_t>(narrow), all.curves.size() - wide.curves.size());
 }
 
 

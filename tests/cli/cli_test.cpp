@@ -7,8 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -428,6 +430,43 @@ TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--orientable: maybe not in {auto,yes,no}"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(path("x.ply")));
+}
+
+// A square scanned with an unsampled stripe (0.8 x 0.06, about 6 local spacings wide): the
+// detector reads the stripe as a second boundary loop, and the hint names the
+// --boundary-min-width that drops it; with it the square is one disc.
+TEST_F(CliTest, reconstruct_hints_at_an_unsampled_stripe_read_as_a_hole) {
+  ASSERT_EQ(run_envcrust("sample square -n 20000 --seed 1 -q -o " + path("sq.xyz")).exit_code, 0);
+  const auto points = envcrust::io::read_points(path("sq.xyz"));
+  envcrust::PointSet kept;
+  for (const auto& p : points.points)
+    if (!(std::abs(p.x()) < 0.4 && std::abs(p.y()) < 0.03)) kept.points.push_back(p);
+  envcrust::io::write_points(path("stripe.xyz"), kept);
+  const auto r = run_envcrust("reconstruct " + path("stripe.xyz") + " -o " + path("s.ply") + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["input_boundary_widths"].size(), 2u);
+  const double stripe = j["input_boundary_widths"][1].get<double>();
+  EXPECT_GT(stripe, 3.0);
+  EXPECT_LT(stripe, 8.0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  std::ostringstream width;
+  width << std::fixed << std::setprecision(1) << stripe;
+  std::ostringstream widest;
+  widest << std::fixed << std::setprecision(1) << j["input_boundary_widths"][0].get<double>();
+  const int k = static_cast<int>(std::floor(stripe)) + 1;
+  ASSERT_EQ(j["hints"].size(), 1u) << j["hints"].dump();
+  EXPECT_EQ(j["hints"][0], "detected boundary loop 1 is " + width.str() + " local spacings wide (the widest " +
+                               widest.str() + "): if it is an unsampled stripe rather than a hole of the surface, "
+                               "--boundary-min-width " + std::to_string(k) + " drops it");
+  const auto fixed = run_envcrust("reconstruct " + path("stripe.xyz") + " --boundary-min-width " + std::to_string(k) +
+                                  " -o " + path("s.ply") + " --json");
+  ASSERT_EQ(fixed.exit_code, 0) << fixed.err;
+  const auto f = nlohmann::json::parse(fixed.out);
+  EXPECT_EQ(f["input_boundary_curves"], 1);
+  EXPECT_EQ(f["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(f["analysis"]["boundary_loops"], 1);
+  EXPECT_TRUE(f["hints"].empty()) << f["hints"].dump();
 }
 
 // Issue #5: the boundary of a point cloud can be given instead of detected.
