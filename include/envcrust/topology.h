@@ -73,8 +73,8 @@ struct TopologyOptions {
 MeshTopology analyze_topology(const TriangleMesh& mesh, const TopologyOptions& options = {});
 
 /// The boundary loops alone, as analyze_topology(mesh, {.weld_identical_vertices = false})
-/// traces them (the same vertices, lengths and loop order) but not oriented: is_oriented is
-/// false and component -1. For the cleaning steps of large meshes that only need each loop's
+/// traces them (the same loops in the same order, with the same lengths; each loop's vertices
+/// may be walked the other way round) but not oriented: is_oriented is false and component -1. For the cleaning steps of large meshes that only need each loop's
 /// vertices and length (it skips the duplicate, component, fan and orientation counts).
 /// @throws InvalidInput as analyze_topology does for a face index out of range.
 std::vector<BoundaryLoop> boundary_loops(const TriangleMesh& mesh);

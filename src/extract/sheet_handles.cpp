@@ -16,9 +16,9 @@ namespace envcrust::extract {
 namespace {
 
 // Seeds such that every vertex lies within `spacing` of one along the sheet: a greedy cover,
-// each vertex not yet covered becomes a seed and covers its geodesic ball. About
-// area / (0.6 spacing^2) seeds, a seventh of what a grid with the same guarantee in space
-// needs (cells of side spacing / sqrt(3)), and the guarantee holds along the sheet.
+// each vertex not yet covered becomes a seed and covers its geodesic ball. On the bunny's
+// sheet 4.6 times fewer seeds than one per occupied cell of a grid with the same guarantee in
+// space (cells of side spacing / sqrt(3)), and the guarantee holds along the sheet.
 std::vector<Index> covering_seeds(const TriangleMesh& mesh, const MeshAdjacency& a, double spacing) {
   std::vector<char> covered(mesh.vertices.size(), 1);
   for (const auto& t : mesh.triangles)
