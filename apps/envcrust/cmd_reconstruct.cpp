@@ -151,20 +151,24 @@ std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
   if (narrow.empty()) return std::nullopt;
   // The width that drops them would also drop any thinner loop, which is no stripe but a
   // boundary the detector could not close (the lion head's neck): then no advice.
-  const double min_width = std::floor(narrow_max) + 1;
   for (const double w : widths)
     if (w < kStripeMinWidth) return std::nullopt;
+  // "a", "a and b", "a, b and c"
+  auto listed = [&](auto&& item) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(1);
+    for (std::size_t k = 0; k < narrow.size(); ++k)
+      out << (k == 0 ? "" : k + 1 == narrow.size() ? " and " : ", ") << item(narrow[k]);
+    return out.str();
+  };
+  const bool one = narrow.size() == 1;
   std::ostringstream h;
-  h << std::setprecision(2) << std::fixed;
-  h << "detected boundary loop" << (narrow.size() == 1 ? " " : "s ");
-  for (std::size_t k = 0; k < narrow.size(); ++k) h << (k == 0 ? "" : k + 1 == narrow.size() ? " and " : ", ") << narrow[k];
-  h << (narrow.size() == 1 ? " is " : " are ");
-  for (std::size_t k = 0; k < narrow.size(); ++k)
-    h << (k == 0 ? "" : k + 1 == narrow.size() ? " and " : ", ") << std::setprecision(1) << widths[narrow[k]];
-  h << " local spacings wide (the widest " << widest << "): if "
-    << (narrow.size() == 1 ? "it is an unsampled stripe rather than a hole" : "they are unsampled stripes rather than holes")
-    << " of the surface, --boundary-min-width " << std::setprecision(0) << min_width << " drops "
-    << (narrow.size() == 1 ? "it" : "them");
+  h << std::fixed << std::setprecision(1) << "detected boundary loop" << (one ? " " : "s ")
+    << listed([](std::size_t i) { return i; }) << (one ? " is " : " are ")
+    << listed([&](std::size_t i) { return widths[i]; }) << " local spacings wide (the widest " << widest << "): if "
+    << (one ? "it is an unsampled stripe rather than a hole" : "they are unsampled stripes rather than holes")
+    << " of the surface, --boundary-min-width " << std::setprecision(0) << std::floor(narrow_max) + 1 << " drops "
+    << (one ? "it" : "them");
   return h.str();
 }
 
