@@ -192,17 +192,15 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
     hints.push_back("the result is non-orientable (" + std::to_string(cross_caps) + " cross-cap" +
                     (cross_caps == 1 ? "" : "s") + "): if the input scans an orientable surface, --orientable removes " +
                     (cross_caps == 1 ? "it" : "them") + " and closes the holes");
+  std::ostringstream h;
   if (handles > 0 && sheet.cut_handles_rel_rho == 0)
-    hints.push_back("the result has genus " + std::to_string(handles) +
-                    ": if the scanned surface has no handles at the scale of rho, --cut-handles 1.5 removes them "
-                    "and closes the holes");
-  else if (handles > 0 && cross_caps == 0) {
-    std::ostringstream h;
+    h << "the result has genus " << handles << ": if the scanned surface has no handles at the scale of rho, "
+      << "--cut-handles " << kScanCutHandlesRelRho << " removes them and closes the holes";
+  else if (handles > 0 && cross_caps == 0)
     h << "the result has genus " << handles << " after the cuts at " << sheet.cut_handles_rel_rho
       << " rho: if the scanned surface has fewer handles, --cut-handles " << 2 * sheet.cut_handles_rel_rho
       << " also removes the ones up to twice as wide";
-    hints.push_back(h.str());
-  }
+  if (!h.str().empty()) hints.push_back(h.str());
   if (const auto stripes = narrow_loops_hint(loaded)) hints.push_back(*stripes);
   return hints;
 }

@@ -165,16 +165,21 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   // envelope's resolution is); with fill_cut_holes every hole away from the boundary curves
   // is closed by a smooth disc, once the pieces the cut has separated from every boundary
   // curve are dropped. Returns the text the cut's warning ends with.
+  // Pinholes fanned, then (with fill_cut_holes) the holes away from the boundary curves
+  // closed with discs, optionally once the pieces cut off from every curve are dropped.
+  // Returns the number of discs.
+  auto close_holes = [&](bool drop_cut_off_pieces) -> std::size_t {
+    if (options.fill_loops_shorter_than_rel_rho > 0)
+      result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+    if (!options.fill_cut_holes) return 0;
+    if (drop_cut_off_pieces)
+      result.stats.components_dropped += drop_pieces_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
+    return fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
+  };
   auto tidy_after_cut = [&]() -> std::string {
     result.stats.components_dropped +=
         filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
-    if (options.fill_loops_shorter_than_rel_rho > 0)
-      result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
-    std::size_t closed = 0;
-    if (options.fill_cut_holes) {
-      result.stats.components_dropped += drop_pieces_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
-      closed = fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
-    }
+    const std::size_t closed = close_holes(true);
     result.stats.cut_holes_filled += closed;
     // The repair can open holes of its own where it removes faces or splits a vertex:
     // pinholes, fanned too, and slits (on the bunny's ear tip a 4-vertex loop 23 mm long and
@@ -182,11 +187,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     const ManifoldRepairStats repaired = make_manifold(sheet);
     if (repaired.faces_dropped + repaired.non_manifold_faces_removed + repaired.degenerate_faces_removed +
             repaired.vertices_split > 0) {
-      if (options.fill_loops_shorter_than_rel_rho > 0)
-        result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
-      if (options.fill_cut_holes)
-        result.stats.cut_holes_filled +=
-            fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
+      result.stats.cut_holes_filled += close_holes(false);
       make_manifold(sheet);
     }
     if (closed == 0) return "";

@@ -1,7 +1,10 @@
 // Fixture of the CLI tests: a fresh folder per test under the system temp directory.
 #pragma once
 
+#include "run_command.h"
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -20,5 +23,16 @@ class CliTest : public ::testing::Test {
   [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::filesystem::path dir_;
 };
+
+/// Runs `envcrust args` (which should ask for --json) and parses its output; a non-zero exit
+/// is a test failure (naming the command and its stderr) and gives an empty object.
+inline nlohmann::json run_envcrust_json(const std::string& args) {
+  const CommandResult r = run_envcrust(args);
+  if (r.exit_code != 0) {
+    ADD_FAILURE() << "envcrust " << args << " exited with " << r.exit_code << ": " << r.err;
+    return nlohmann::json::object();
+  }
+  return nlohmann::json::parse(r.out);
+}
 
 }  // namespace envcrust::testing

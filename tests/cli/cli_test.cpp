@@ -18,6 +18,7 @@
 
 using envcrust::testing::CliTest;
 using envcrust::testing::run_envcrust;
+using envcrust::testing::run_envcrust_json;
 namespace fs = std::filesystem;
 
 TEST_F(CliTest, every_subcommand_has_help) {
@@ -36,9 +37,7 @@ TEST_F(CliTest, missing_subcommand_is_a_usage_error) {
 }
 
 TEST_F(CliTest, sample_list_names_every_surface_with_its_topology) {
-  const auto r = run_envcrust("sample --list --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("sample --list --json");
   ASSERT_EQ(j.size(), 13u);
   bool saw_moebius = false;
   for (const auto& s : j) {
@@ -74,9 +73,7 @@ TEST_F(CliTest, unknown_surface_is_refused_with_the_known_names) {
 
 TEST_F(CliTest, analyze_reports_a_moebius_tessellation_as_non_orientable) {
   ASSERT_EQ(run_envcrust("sample moebius --mesh -q -o " + path("m.ply")).exit_code, 0);
-  const auto r = run_envcrust("analyze " + path("m.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("analyze " + path("m.ply") + " --json");
   EXPECT_EQ(j["euler_characteristic"], 0);
   EXPECT_EQ(j["boundary_loops"], 1);
   EXPECT_EQ(j["is_orientable"], false);
@@ -86,9 +83,9 @@ TEST_F(CliTest, analyze_reports_a_moebius_tessellation_as_non_orientable) {
 
 TEST_F(CliTest, analyze_against_a_builtin_reference_measures_distances_and_boundaries) {
   ASSERT_EQ(run_envcrust("sample trefoil-ribbon --mesh -q -o " + path("t.off")).exit_code, 0);
-  const auto r = run_envcrust("analyze " + path("t.off") + " --reference builtin:trefoil-ribbon --samples 20000 --json --report " + path("rep.json"));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("analyze " + path("t.off") +
+                                   " --reference builtin:trefoil-ribbon --samples 20000 --json --report " +
+                                   path("rep.json"));
   EXPECT_EQ(j, nlohmann::json::parse(envcrust::testing::slurp(path("rep.json"))));
   EXPECT_EQ(j["loops"][0]["knot"]["type"], "trefoil");
   EXPECT_EQ(j["loops"][1]["knot"]["type"], "trefoil");
@@ -101,9 +98,7 @@ TEST_F(CliTest, analyze_against_a_builtin_reference_measures_distances_and_bound
 TEST_F(CliTest, analyze_a_point_reference) {
   ASSERT_EQ(run_envcrust("sample sphere --mesh -q -o " + path("s.obj")).exit_code, 0);
   ASSERT_EQ(run_envcrust("sample sphere -n 2000 -q -o " + path("s.xyz")).exit_code, 0);
-  const auto r = run_envcrust("analyze " + path("s.obj") + " -r " + path("s.xyz") + " --samples 5000 --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("analyze " + path("s.obj") + " -r " + path("s.xyz") + " --samples 5000 --json");
   EXPECT_EQ(j["euler_characteristic"], 2);
   EXPECT_LT(j["distance"]["reference_to_mesh"]["max"].get<double>(), 1e-3);
   // Mesh points are up to the sampling gap away from the nearest of 2000 points.
@@ -143,9 +138,7 @@ TEST_F(CliTest, garbage_mesh_is_an_error_not_a_crash) {
 }
 
 TEST_F(CliTest, reconstruct_keeps_the_open_cylinder_open) {
-  const auto r = run_envcrust("reconstruct builtin:cylinder -n 5000 -o " + path("c.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct builtin:cylinder -n 5000 -o " + path("c.ply") + " --json");
   const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 2);
@@ -163,9 +156,7 @@ TEST_F(CliTest, reconstruct_keeps_the_open_cylinder_open) {
 }
 
 TEST_F(CliTest, reconstruct_with_remesh_reports_faces_and_analyzes_the_remeshed_mesh) {
-  const auto r = run_envcrust("reconstruct builtin:cylinder -n 5000 --remesh -o " + path("c.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct builtin:cylinder -n 5000 --remesh -o " + path("c.ply") + " --json");
   const auto& m = j["remesh"];
   EXPECT_EQ(m["is_remeshed"], true);
   EXPECT_LT(3 * m["faces_after"].get<std::size_t>(), m["faces_before"].get<std::size_t>());
@@ -180,10 +171,8 @@ TEST_F(CliTest, reconstruct_with_remesh_reports_faces_and_analyzes_the_remeshed_
   const auto again = run_envcrust("analyze " + path("c.ply") + " --json");
   EXPECT_EQ(nlohmann::json::parse(again.out)["faces"], m["faces_after"]);
   // A Moebius band is remeshed too (cut along a seam, welded back) and stays one.
-  const auto moebius = run_envcrust("reconstruct builtin:moebius -n 3000 --remesh --remesh-edge 0.1 -o " +
+  const auto mj = run_envcrust_json("reconstruct builtin:moebius -n 3000 --remesh --remesh-edge 0.1 -o " +
                                     path("m.ply") + " --json");
-  ASSERT_EQ(moebius.exit_code, 0) << moebius.err;
-  const auto mj = nlohmann::json::parse(moebius.out);
   EXPECT_EQ(mj["remesh"]["is_remeshed"], true) << mj["warnings"];
   EXPECT_LT(mj["remesh"]["faces_after"].get<std::size_t>(), mj["remesh"]["faces_before"].get<std::size_t>());
   const auto& ma = mj["analysis"];
@@ -195,9 +184,7 @@ TEST_F(CliTest, reconstruct_with_remesh_reports_faces_and_analyzes_the_remeshed_
 }
 
 TEST_F(CliTest, reconstruct_moebius_is_non_orientable_with_one_boundary) {
-  const auto r = run_envcrust("reconstruct builtin:moebius -n 5000 -o " + path("m.off") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct builtin:moebius -n 5000 -o " + path("m.off") + " --json");
   const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 1);
@@ -218,9 +205,7 @@ TEST_F(CliTest, direct_power_crust_closes_the_open_cylinder) {
 }
 
 TEST_F(CliTest, envelope_writes_samples_with_offset_directions) {
-  const auto r = run_envcrust("envelope builtin:hemisphere -n 3000 --rho 0.1 -o " + path("e.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("envelope builtin:hemisphere -n 3000 --rho 0.1 -o " + path("e.ply") + " --json");
   EXPECT_DOUBLE_EQ(j["envelope"]["rho"].get<double>(), 0.1);
   const auto points = envcrust::io::read_points(path("e.ply"));
   EXPECT_EQ(points.size(), j["envelope"]["samples"].get<std::size_t>());
@@ -239,9 +224,7 @@ TEST_F(CliTest, envelope_writes_samples_with_offset_directions) {
 
 // --orientable cuts the Moebius strip open across its one orientation seam: a disc.
 TEST_F(CliTest, reconstruct_orientable_cuts_the_moebius_strip_into_a_disc) {
-  const auto r = run_envcrust("reconstruct builtin:moebius -n 5000 --orientable -o " + path("m.off") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct builtin:moebius -n 5000 --orientable -o " + path("m.off") + " --json");
   const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 1);
   EXPECT_EQ(a["boundary_loops"], 1);
@@ -282,9 +265,7 @@ TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
 // 300 samples of the cylinder are too sparse for half its reach: the automatic rho bridges
 // their gaps instead (reported), and the open cylinder still comes out as an annulus.
 TEST_F(CliTest, reconstruct_sparse_input_gets_a_rho_that_bridges_its_gaps) {
-  const auto r = run_envcrust("reconstruct builtin:cylinder -n 300 -o " + path("c.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct builtin:cylinder -n 300 -o " + path("c.ply") + " --json");
   EXPECT_EQ(j["envelope"]["rho_from"], "gaps");
   EXPECT_GT(j["envelope"]["rho"].get<double>(), 0.18);
   EXPECT_EQ(j["warnings"][0].get<std::string>().rfind("rho raised from 0.17", 0), 0u) << j["warnings"][0];
@@ -309,10 +290,8 @@ TEST_F(CliTest, reconstruct_with_rho_below_the_gaps_says_which_rho_works) {
   ASSERT_NE(at, std::string::npos) << r.err;
   const double suggested = std::stod(r.err.substr(at + 10));
   EXPECT_GT(suggested, 0.03);
-  const auto ok = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho " + std::to_string(suggested * 1.01) +
-                               " --json -o " + path("y.ply"));
-  ASSERT_EQ(ok.exit_code, 0) << ok.err;
-  const auto j = nlohmann::json::parse(ok.out);
+  const auto j = run_envcrust_json("reconstruct builtin:cylinder -n 2000 --rho " + std::to_string(suggested * 1.01) +
+                                   " --json -o " + path("y.ply"));
   EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
   EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
 }
@@ -326,10 +305,8 @@ TEST_F(CliTest, reconstruct_warns_when_rho_exceeds_the_reach) {
 }
 
 TEST_F(CliTest, powercrust_of_a_torus_sample_is_a_closed_torus) {
-  const auto r = run_envcrust("powercrust builtin:torus -n 4000 -o " + path("t.ply") + " --medial-axis " +
-                              path("ma.ply") + " --poles " + path("poles.txt") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("powercrust builtin:torus -n 4000 -o " + path("t.ply") + " --medial-axis " +
+                                   path("ma.ply") + " --poles " + path("poles.txt") + " --json");
   EXPECT_EQ(j["crust"]["euler_characteristic"], 0);
   EXPECT_EQ(j["crust"]["is_closed"], true);
   EXPECT_EQ(j["crust"]["is_manifold"], true);
@@ -353,9 +330,8 @@ TEST_F(CliTest, powercrust_refuses_coplanar_points) {
 
 TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   ASSERT_EQ(run_envcrust("sample cylinder -n 10000 --seed 3 -q -o " + path("c.xyz")).exit_code, 0);
-  const auto r = run_envcrust("reconstruct " + path("c.xyz") + " -r builtin:cylinder -o " + path("c.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("c.xyz") + " -r builtin:cylinder -o " + path("c.ply") +
+                                   " --json");
   const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 2);
@@ -374,9 +350,8 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
 // cut the cross-cap out if it were.
 TEST_F(CliTest, reconstruct_a_non_orientable_point_cloud_with_a_hint) {
   ASSERT_EQ(run_envcrust("sample moebius -n 10000 --seed 3 -q -o " + path("m.xyz")).exit_code, 0);
-  const auto r = run_envcrust("reconstruct " + path("m.xyz") + " -r builtin:moebius -o " + path("m.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("m.xyz") + " -r builtin:moebius -o " + path("m.ply") +
+                                   " --json");
   const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 1);
@@ -391,10 +366,8 @@ TEST_F(CliTest, reconstruct_a_non_orientable_point_cloud_with_a_hint) {
 // says which --cut-handles would also remove wider handles, should the scan have fewer.
 TEST_F(CliTest, reconstruct_a_torus_point_cloud_keeps_its_handle_with_a_hint) {
   ASSERT_EQ(run_envcrust("sample torus -n 5000 --seed 2 -q -o " + path("t.xyz")).exit_code, 0);
-  const auto r =
-      run_envcrust("reconstruct " + path("t.xyz") + " --no-boundary -r builtin:torus -o " + path("t.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("t.xyz") + " --no-boundary -r builtin:torus -o " +
+                                   path("t.ply") + " --json");
   EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
   EXPECT_EQ(j["analysis"]["boundary_loops"], 0);
   EXPECT_EQ(j["sheet"]["handle_balls"], 0);
@@ -408,9 +381,8 @@ TEST_F(CliTest, reconstruct_a_torus_point_cloud_keeps_its_handle_with_a_hint) {
 // default (--orientable=auto), and --orientable=no or --cut-handles 0 turn the cuts off.
 TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
   ASSERT_EQ(run_envcrust("sample cylinder --mesh -q -o " + path("c.off")).exit_code, 0);
-  const auto r = run_envcrust("reconstruct " + path("c.off") + " -r builtin:cylinder -o " + path("c.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("c.off") + " -r builtin:cylinder -o " + path("c.ply") +
+                                   " --json");
   EXPECT_EQ(j["input_is_orientable"], true);
   EXPECT_EQ(j["sheet"]["cut_to_orientable"], true);
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
@@ -420,10 +392,9 @@ TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
   EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
   EXPECT_EQ(j["analysis"]["is_orientable"], true);
   EXPECT_LT(j["analysis"]["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
-  const auto off = run_envcrust("reconstruct " + path("c.off") + " --orientable=no --cut-handles 0 --no-analysis -o " +
-                                path("c2.ply") + " --json");
-  ASSERT_EQ(off.exit_code, 0) << off.err;
-  const auto k = nlohmann::json::parse(off.out);
+  const auto k = run_envcrust_json("reconstruct " + path("c.off") +
+                                   " --orientable=no --cut-handles 0 --no-analysis -o " +
+                                   path("c2.ply") + " --json");
   EXPECT_EQ(k["sheet"]["cut_to_orientable"], false);
   EXPECT_EQ(k["sheet"]["cut_handles_rel_rho"], 0.0);
   const auto bad = run_envcrust("reconstruct " + path("c.off") + " --orientable=maybe -o " + path("x.ply"));
@@ -442,9 +413,7 @@ TEST_F(CliTest, reconstruct_hints_at_an_unsampled_stripe_read_as_a_hole) {
   for (const auto& p : points.points)
     if (!(std::abs(p.x()) < 0.4 && std::abs(p.y()) < 0.03)) kept.points.push_back(p);
   envcrust::io::write_points(path("stripe.xyz"), kept);
-  const auto r = run_envcrust("reconstruct " + path("stripe.xyz") + " -o " + path("s.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("stripe.xyz") + " -o " + path("s.ply") + " --json");
   ASSERT_EQ(j["input_boundary_widths"].size(), 2u);
   const double stripe = j["input_boundary_widths"][1].get<double>();
   EXPECT_GT(stripe, 3.0);
@@ -459,10 +428,8 @@ TEST_F(CliTest, reconstruct_hints_at_an_unsampled_stripe_read_as_a_hole) {
   EXPECT_EQ(j["hints"][0], "detected boundary loop 1 is " + width.str() + " local spacings wide (the widest " +
                                widest.str() + "): if it is an unsampled stripe rather than a hole of the surface, "
                                "--boundary-min-width " + std::to_string(k) + " drops it");
-  const auto fixed = run_envcrust("reconstruct " + path("stripe.xyz") + " --boundary-min-width " + std::to_string(k) +
-                                  " -o " + path("s.ply") + " --json");
-  ASSERT_EQ(fixed.exit_code, 0) << fixed.err;
-  const auto f = nlohmann::json::parse(fixed.out);
+  const auto f = run_envcrust_json("reconstruct " + path("stripe.xyz") + " --boundary-min-width " + std::to_string(k) +
+                                   " -o " + path("s.ply") + " --json");
   EXPECT_EQ(f["input_boundary_curves"], 1);
   EXPECT_EQ(f["analysis"]["euler_characteristic"], 1);
   EXPECT_EQ(f["analysis"]["boundary_loops"], 1);
@@ -482,10 +449,8 @@ TEST_F(CliTest, reconstruct_with_given_boundary_points) {
         if (i % 10 == 0) out << line << "\n";
     }
   }
-  const auto r = run_envcrust("reconstruct " + path("c.xyz") + " --boundary " + path("rims.xyz") +
-                              " -r builtin:cylinder -o " + path("c.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("c.xyz") + " --boundary " + path("rims.xyz") +
+                                   " -r builtin:cylinder -o " + path("c.ply") + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 2);
   const auto& a = j["analysis"];
   EXPECT_EQ(a["euler_characteristic"], 0);
@@ -496,10 +461,8 @@ TEST_F(CliTest, reconstruct_with_given_boundary_points) {
   // The same loops as closed curves, one .polyline file each (as `sample --boundary-out`
   // writes them), the option repeated.
   ASSERT_EQ(run_envcrust("sample cylinder -q --boundary-out " + path("rim.polyline")).exit_code, 0);
-  const auto curves = run_envcrust("reconstruct " + path("c.xyz") + " --boundary " + path("rim.0.polyline") +
-                                   " --boundary " + path("rim.1.polyline") + " -o " + path("c2.ply") + " --json");
-  ASSERT_EQ(curves.exit_code, 0) << curves.err;
-  const auto jc = nlohmann::json::parse(curves.out);
+  const auto jc = run_envcrust_json("reconstruct " + path("c.xyz") + " --boundary " + path("rim.0.polyline") +
+                                    " --boundary " + path("rim.1.polyline") + " -o " + path("c2.ply") + " --json");
   EXPECT_EQ(jc["input_boundary_curves"], 2);
   EXPECT_EQ(jc["analysis"]["euler_characteristic"], 0);
   EXPECT_EQ(jc["analysis"]["boundary_loops"], 2);
@@ -550,9 +513,8 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   EXPECT_EQ(j["sheet"]["handle_balls"], 0);
   EXPECT_TRUE(j["hints"].empty()) << j["hints"].dump();
   // --orientable=yes overrides what the mesh says: the strip is cut across into a disc.
-  const auto forced = run_envcrust("reconstruct " + path("m.off") + " --orientable=yes -o " + path("d.ply") + " --json");
-  ASSERT_EQ(forced.exit_code, 0) << forced.err;
-  const auto f = nlohmann::json::parse(forced.out);
+  const auto f = run_envcrust_json("reconstruct " + path("m.off") + " --orientable=yes -o " + path("d.ply") +
+                                   " --json");
   EXPECT_EQ(f["sheet"]["orientation_seams"], 1);
   EXPECT_EQ(f["analysis"]["is_orientable"], true);
   EXPECT_EQ(f["analysis"]["euler_characteristic"], 1);
@@ -588,9 +550,8 @@ TEST_F(CliTest, reconstruct_drops_repeated_faces_of_a_mesh) {
     for (const auto& l : body) out << l << '\n';
     out << "3 " << a << ' ' << b << ' ' << c << "\n3 " << a << ' ' << c << ' ' << b << '\n';
   }
-  const auto r = run_envcrust("reconstruct " + path("dup.off") + " -r builtin:cylinder -o " + path("r.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = run_envcrust_json("reconstruct " + path("dup.off") + " -r builtin:cylinder -o " + path("r.ply") +
+                                   " --json");
   const auto notes = j["notes"].get<std::vector<std::string>>();
   EXPECT_NE(std::find(notes.begin(), notes.end(), "2 repeated or degenerate faces dropped"), notes.end());
   EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);

@@ -13,16 +13,14 @@
 namespace {
 
 using envcrust::testing::CliTest;
-using envcrust::testing::run_envcrust;
+using envcrust::testing::run_envcrust_json;
 
 TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "foot_vhacd";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
-  const auto run = run_envcrust("reconstruct " + (folder / "points.xyz").string() + " -o " + path("foot.ply") +
-                                " --rho-adaptive --boundary-min-width 7 --reference " +
-                                (folder / "foot_open.off").string() + " --json");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto j = nlohmann::json::parse(run.out);
+  const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("foot.ply") +
+                                   " --rho-adaptive --boundary-min-width 7 --reference " +
+                                   (folder / "foot_open.off").string() + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 1);
   const auto& a = j["analysis"];
   EXPECT_EQ(a["is_manifold"], true);
@@ -39,11 +37,9 @@ TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
 TEST_F(CliTest, issue_5_bunny_with_cuts_is_one_orientable_genus_0_piece_with_its_base_holes) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
-  const auto run = run_envcrust("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
-                                " --rho-adaptive --orientable --reference " +
-                                (folder / "bun_zipper.ply").string() + " --json");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto j = nlohmann::json::parse(run.out);
+  const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
+                                   " --rho-adaptive --orientable --reference " +
+                                   (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 4);  // the base's 4 holes; the small one on the body is missed
   EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
   EXPECT_GT(j["sheet"]["cut_holes_filled"].get<int>(), 0);
@@ -68,10 +64,8 @@ TEST_F(CliTest, issue_5_bunny_with_cuts_is_one_orientable_genus_0_piece_with_its
 TEST_F(CliTest, issue_5_bunny_with_orientable_alone_is_one_genus_0_piece) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
-  const auto run = run_envcrust("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
-                                " --orientable --reference " + (folder / "bun_zipper.ply").string() + " --json");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const auto j = nlohmann::json::parse(run.out);
+  const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
+                                   " --orientable --reference " + (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
   EXPECT_GT(j["sheet"]["orientation_seams"].get<int>(), 0);
   const auto& a = j["analysis"];
