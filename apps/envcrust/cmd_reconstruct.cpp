@@ -13,6 +13,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -188,7 +189,8 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
     (c.is_orientable ? handles : cross_caps) += *c.genus;
   }
   std::vector<std::string> hints;
-  if (cross_caps > 0 && !sheet.cut_to_orientable && loaded.is_orientable.value_or(true))
+  if (cross_caps > 0 && !(sheet.cut_to_orientable && std::isinf(sheet.orientable_max_twist_loop_rel_rho)) &&
+      loaded.is_orientable.value_or(true))
     hints.push_back("the result is non-orientable (" + std::to_string(cross_caps) + " cross-cap" +
                     (cross_caps == 1 ? "" : "s") + "): if the input scans an orientable surface, --orientable removes " +
                     (cross_caps == 1 ? "it" : "them") + " and closes the holes");
@@ -213,7 +215,15 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
 void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   auto& sheet = cmd.options.sheet;
   const bool is_scan = loaded.source != "builtin";
-  sheet.cut_to_orientable = cmd.orientable == "yes" || (cmd.orientable == "auto" && loaded.is_orientable.value_or(false));
+  // --orientable=auto: an orientable mesh is cut at every seam, a point file (which does not
+  // say) only at the defects, the seams that a reversing loop shorter than a twist of the
+  // surface could be crosses; a non-orientable mesh and a built-in surface are not cut.
+  const bool point_file = is_scan && !loaded.is_orientable;
+  sheet.cut_to_orientable =
+      cmd.orientable == "yes" || (cmd.orientable == "auto" && (loaded.is_orientable.value_or(false) || point_file));
+  sheet.orientable_max_twist_loop_rel_rho = cmd.orientable == "auto" && point_file
+                                                ? extract::kTwistMinLoopRelRho
+                                                : std::numeric_limits<double>::infinity();
   sheet.cut_handles_rel_rho = cmd.cut_handles.value_or(is_scan ? kScanCutHandlesRelRho : 0.0);
   if (cmd.options.method == pipeline::Method::Envelope && cmd.options.extraction == pipeline::Extraction::Sheet) return;
   if (cmd.orientable == "yes" || cmd.cut_handles.value_or(0) > 0)
@@ -279,10 +289,15 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"faces_dropped_at_defects", s.faces_dropped_at_defects},
                   {"orientation_seams", s.orientation_seams},
                   {"faces_removed_at_seams", s.faces_removed_at_seams},
+                  {"orientation_twists_kept", s.orientation_twists_kept},
                   {"handle_balls", s.handle_balls},
                   {"faces_removed_at_handles", s.faces_removed_at_handles},
                   {"cut_holes_filled", s.cut_holes_filled},
                   {"cut_to_orientable", cmd.options.sheet.cut_to_orientable},
+                  {"orientable_max_twist_loop_rel_rho",
+                   std::isinf(cmd.options.sheet.orientable_max_twist_loop_rel_rho)
+                       ? nlohmann::json(nullptr)
+                       : nlohmann::json(cmd.options.sheet.orientable_max_twist_loop_rel_rho)},
                   {"cut_handles_rel_rho", cmd.options.sheet.cut_handles_rel_rho}};
   }
   if (result.remesh_stats) {
@@ -391,7 +406,10 @@ void register_reconstruct(CLI::App& app) {
                 "--orientable alone = --orientable=yes: the surface is orientable (a scan of a solid): where the sheet comes "
                 "out non-orientable, remove it within "
                 "--orientable-cut rho of each orientation seam, and close the hole with a disc (reported). "
-                "--orientable=auto (default): yes when the input is an orientable mesh, else no; --orientable=no: never")
+                "--orientable=auto (default): yes when the input is an orientable mesh; for a point file only the seams "
+                "that an orientation-reversing loop shorter than 4 pi rho crosses (a twist of the surface itself is at "
+                "least 2 pi reach long, so a Moebius strip keeps its twist); no for a non-orientable mesh and built-in "
+                "surfaces; --orientable=no: never")
       ->check(CLI::IsMember({"auto", "yes", "no"}));
   sub->add_option("--orientable-cut", cmd->options.sheet.orientable_cut_rel_rho,
                   "With --orientable: half-width of the band removed around a seam, in rho")

@@ -5,10 +5,16 @@
 #include "envcrust/envelope.h"
 #include "envcrust/types.h"
 
+#include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
 namespace envcrust::extract {
+
+/// The shortest orientation-reversing loop of a surface M, in units of an envelope radius
+/// rho <= reach/2: 2 pi reach >= 4 pi rho (SheetOptions::orientable_max_twist_loop_rel_rho).
+inline constexpr double kTwistMinLoopRelRho = 4.0 * std::numbers::pi;
 
 /// Options of extract_sheet.
 struct SheetOptions {
@@ -69,6 +75,12 @@ struct SheetOptions {
   /// there instead of a cross-cap. Off by default: a Moebius strip is non-orientable.
   bool cut_to_orientable = false;
   double orientable_cut_rel_rho = 1.0;  ///< > 0
+  /// With cut_to_orientable: cut only the seams crossed by an orientation-reversing loop
+  /// shorter than this (in rho) and keep the others as twists of the surface itself.
+  /// Infinity (default): cut every seam. kTwistMinLoopRelRho separates the two when rho is
+  /// at most half the reach: a twist of M is at least 2 pi reach long (Fenchel: the shortest
+  /// loop in its class curves at most 1/reach), so at least 4 pi rho. > 0.
+  double orientable_max_twist_loop_rel_rho = std::numeric_limits<double>::infinity();
   /// For surfaces that are discs at this scale (in rho) everywhere but at their holes: remove
   /// every geodesic ball of this radius that is not a disc once the sheet's own holes inside it
   /// are capped (handles and cross-caps where a thin part was sampled too sparsely; also any
@@ -101,6 +113,9 @@ struct SheetStats {
   /// SheetOptions::cut_to_orientable: orientation seams found and faces removed around them.
   std::size_t orientation_seams = 0;
   std::size_t faces_removed_at_seams = 0;
+  /// Seams left because no reversing loop shorter than orientable_max_twist_loop_rel_rho
+  /// crosses them: twists of the surface (a Moebius strip's).
+  std::size_t orientation_twists_kept = 0;
   /// SheetOptions::cut_handles_rel_rho: balls that were not discs, and the faces removed.
   std::size_t handle_balls = 0;
   std::size_t faces_removed_at_handles = 0;

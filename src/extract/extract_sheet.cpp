@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 
 namespace envcrust::extract {
@@ -37,6 +38,8 @@ void validate(const SheetOptions& o) {
   if (!(o.max_face_distance_rel_rho >= 0)) fail("max_face_distance_rel_rho", o.max_face_distance_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
   if (!(o.orientable_cut_rel_rho > 0)) fail("orientable_cut_rel_rho", o.orientable_cut_rel_rho);
+  if (!(o.orientable_max_twist_loop_rel_rho > 0))
+    fail("orientable_max_twist_loop_rel_rho", o.orientable_max_twist_loop_rel_rho);
   if (!(o.cut_handles_rel_rho >= 0)) fail("cut_handles_rel_rho", o.cut_handles_rel_rho);
 }
 
@@ -194,9 +197,19 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     return "; " + std::to_string(closed) + " hole" + (closed == 1 ? "" : "s") + " closed with a disc";
   };
   if (options.cut_to_orientable) {
-    const OrientableCutStats cut = cut_to_orientable(sheet, options.orientable_cut_rel_rho * envelope.rho);
+    const OrientableCutStats cut =
+        cut_to_orientable(sheet, options.orientable_cut_rel_rho * envelope.rho,
+                          options.orientable_max_twist_loop_rel_rho * envelope.rho);
     result.stats.orientation_seams = cut.seams;
     result.stats.faces_removed_at_seams = cut.faces_removed;
+    result.stats.orientation_twists_kept = cut.twists_kept;
+    if (cut.twists_kept > 0) {
+      std::ostringstream w;
+      w << "the sheet has " << cut.twists_kept << " orientation-reversing twist" << (cut.twists_kept == 1 ? "" : "s")
+        << " that no loop shorter than " << std::setprecision(3) << options.orientable_max_twist_loop_rel_rho
+        << " rho reverses: kept as part of the surface (a Moebius strip's twist), not cut";
+      result.warnings.push_back(w.str());
+    }
     if (cut.seams > 0) {
       const std::string closed = tidy_after_cut();
       result.warnings.push_back("the sheet was non-orientable: " + std::to_string(cut.faces_removed) +

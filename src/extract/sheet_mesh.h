@@ -7,6 +7,7 @@
 
 #include "envcrust/nearest_index.h"
 
+#include <limits>
 #include <vector>
 
 namespace envcrust::extract {
@@ -100,15 +101,22 @@ ManifoldRepairStats make_manifold(TaggedMesh& tagged, int max_rounds = 4);
 
 /// What cut_to_orientable did.
 struct OrientableCutStats {
-  std::size_t seams = 0;          ///< connected seams of orientation-reversing edges found
+  std::size_t seams = 0;        ///< connected seams of orientation-reversing edges cut
+  std::size_t twists_kept = 0;  ///< seams left: no reversing loop shorter than max_twist_loop
   std::size_t faces_removed = 0;
-  bool still_non_orientable = false;
+  bool still_non_orientable = false;  ///< seams to cut were left after max_rounds
 };
 
 /// Remove the faces within `radius` (along mesh edges) of the seams where no consistent
 /// orientation exists, then repair the manifold; repeat up to `max_rounds` times while seams
-/// remain. Leaves the mesh consistently wound (orient_faces).
-OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, int max_rounds = 3);
+/// remain. Only the seams crossed by an orientation-reversing loop (a closed path between
+/// face centroids along which the winding comes back reversed) shorter than `max_twist_loop`
+/// are cut: a cross-cap where the sheet crossed itself is a few rho across, a twist of the
+/// surface itself (a Moebius strip) runs around it. Infinity cuts every seam. Leaves the mesh
+/// wound as consistently as it can be (orient_faces).
+OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius,
+                                     double max_twist_loop = std::numeric_limits<double>::infinity(),
+                                     int max_rounds = 3);
 
 /// What cut_local_handles did.
 struct HandleCutStats {

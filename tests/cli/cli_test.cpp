@@ -339,15 +339,21 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   // Away from the boundary the sheet follows the samples closely.
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
   // A point file is a scan: the handle cut is on by default and finds nothing to cut here;
-  // its orientability is unknown, so no orientation cut.
+  // its orientability is unknown, so only seams that short reversing loops cross would be
+  // cut, and there are none.
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
   EXPECT_EQ(j["sheet"]["handle_balls"], 0);
-  EXPECT_EQ(j["sheet"]["cut_to_orientable"], false);
+  EXPECT_EQ(j["sheet"]["cut_to_orientable"], true);
+  EXPECT_NEAR(j["sheet"]["orientable_max_twist_loop_rel_rho"].get<double>(), 4 * 3.14159265, 1e-6);
+  EXPECT_EQ(j["sheet"]["orientation_seams"], 0);
+  EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
 }
 
-// A point file of a Moebius strip comes out non-orientable, as it should; since a point file
-// does not say whether the scanned surface is orientable, the hint names the flag that would
-// cut the cross-cap out if it were.
+// A point file of a Moebius strip comes out non-orientable, as it should: its orientation
+// seam is crossed by no reversing loop shorter than 4 pi rho (they run around the strip, about
+// 2 pi / rho = 35 rho long), so --orientable=auto keeps it as a twist and says so. Since a
+// point file does not say whether the scanned surface is orientable, the hint names the flag
+// that would cut the cross-cap out if it were.
 TEST_F(CliTest, reconstruct_a_non_orientable_point_cloud_with_a_hint) {
   ASSERT_EQ(run_envcrust("sample moebius -n 10000 --seed 3 -q -o " + path("m.xyz")).exit_code, 0);
   const auto j = run_envcrust_json("reconstruct " + path("m.xyz") + " -r builtin:moebius -o " + path("m.ply") +
@@ -357,6 +363,12 @@ TEST_F(CliTest, reconstruct_a_non_orientable_point_cloud_with_a_hint) {
   EXPECT_EQ(a["boundary_loops"], 1);
   EXPECT_EQ(a["is_orientable"], false);
   EXPECT_EQ(j["sheet"]["handle_balls"], 0) << "the strip is a disc at 1.5 rho everywhere";
+  EXPECT_EQ(j["sheet"]["orientation_seams"], 0);
+  EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 1);
+  EXPECT_EQ(j["sheet"]["faces_removed_at_seams"], 0);
+  ASSERT_EQ(j["warnings"].size(), 1u) << j["warnings"].dump();
+  EXPECT_EQ(j["warnings"][0], "the sheet has 1 orientation-reversing twist that no loop shorter than 12.6 rho "
+                              "reverses: kept as part of the surface (a Moebius strip's twist), not cut");
   ASSERT_EQ(j["hints"].size(), 1u);
   EXPECT_EQ(j["hints"][0], "the result is non-orientable (1 cross-cap): if the input scans an orientable surface, "
                            "--orientable removes it and closes the holes");

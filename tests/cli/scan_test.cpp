@@ -1,8 +1,9 @@
 // Real scans through the CLI (label slow: 30-80 s each on 2 cores; skipped when
 // ../shared/data is absent). Issue #5: the foot is a manifold with the ankle as its only
 // boundary loop; the bunny, whose thin ear tips come out with handles and cross-caps, is a
-// genus-0 manifold with its detected base holes once those are cut out and closed (the handle
-// cut is a scan's default; --orientable is asked for).
+// genus-0 manifold with its detected base holes once those are cut out and closed (both cuts
+// are a point file's defaults: the handle cut, and the orientation cut of the seams that short
+// reversing loops cross).
 #include "cli_fixture.h"
 #include "run_command.h"
 
@@ -38,7 +39,7 @@ TEST_F(CliTest, issue_5_bunny_with_cuts_is_one_orientable_genus_0_piece_with_its
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
   const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
-                                   " --rho-adaptive --orientable --reference " +
+                                   " --rho-adaptive --reference " +
                                    (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 4);  // the base's 4 holes; the small one on the body is missed
   EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
@@ -57,17 +58,20 @@ TEST_F(CliTest, issue_5_bunny_with_cuts_is_one_orientable_genus_0_piece_with_its
     EXPECT_EQ(hint.get<std::string>().rfind("detected boundary loop", 0), 0u) << hint;
 }
 
-// The same with a uniform rho and only --orientable (the handle cut is a scan's default): the
-// repair after the cuts opens a slit at an ear tip (4 vertices, 23 mm long, under 1 mm wide)
-// that is closed like the cut holes, so the result has the truth's genus and 4 loops (one of
-// the base holes widened by the cut band beside it).
-TEST_F(CliTest, issue_5_bunny_with_orientable_alone_is_one_genus_0_piece) {
+// The same with the defaults (a uniform rho): the sheet crosses itself at the ear tips and the
+// base rim, and every orientation seam there is crossed by a reversing loop shorter than
+// 4 pi rho (0.7-11.5 rho measured), so all are cut; the repair after the cuts opens a slit at
+// an ear tip (4 vertices, 23 mm long, under 1 mm wide) that is closed like the cut holes, so
+// the result has the truth's genus and 4 loops (one of the base holes widened by the cut band
+// beside it).
+TEST_F(CliTest, issue_5_bunny_with_the_defaults_is_one_genus_0_piece) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
   const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
-                                   " --orientable --reference " + (folder / "bun_zipper.ply").string() + " --json");
+                                   " --reference " + (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
   EXPECT_GT(j["sheet"]["orientation_seams"].get<int>(), 0);
+  EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
   const auto& a = j["analysis"];
   EXPECT_EQ(a["is_manifold"], true);
   EXPECT_EQ(a["components"], 1);
