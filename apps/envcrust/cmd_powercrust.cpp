@@ -4,6 +4,7 @@
 #include "inputs.h"
 #include "surface_input.h"
 
+#include "envcrust/errors.h"
 #include "envcrust/io.h"
 #include "envcrust/pipeline.h"
 #include "envcrust/power_crust.h"
@@ -45,7 +46,14 @@ void run_powercrust(PowerCrustCommand& cmd) {
   cmd.options.resolve_unknown = !cmd.keep_unknown;
   cmd.options.build_power_shape = !cmd.medial_axis_output.empty();
   const auto points = load_points(cmd);
-  const auto result = powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
+  // The engine names the problem (too few distinct points, coplanar); the message names the file.
+  const auto result = [&] {
+    try {
+      return powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
+    } catch (const DegenerateInput& e) {
+      throw DegenerateInput(cmd.input + ": " + e.what());
+    }
+  }();
   io::write_mesh(cmd.output, result.crust);
   if (!cmd.medial_axis_output.empty()) io::write_mesh(cmd.medial_axis_output, pipeline::power_shape_mesh(result));
   if (!cmd.poles_output.empty()) {

@@ -76,6 +76,30 @@ PointSet read_boundary_points(const std::vector<std::string>& files) {
   return all;
 }
 
+// The distinct points of a point file (scans repeat points where views overlap; a copy would
+// read as a zero spacing), each with its first occurrence's normal; refused with the file's
+// name when fewer than 5 are left or all lie on a line.
+PointSet distinct_points(PointSet read, const std::string& spec, std::vector<std::string>& notes) {
+  mesh::MergedPoints merged = mesh::merge_duplicate_points(read.points);
+  PointSet out;
+  out.points = std::move(merged.points);
+  if (read.has_normals()) {
+    std::vector<char> seen(out.points.size(), 0);
+    for (std::size_t i = 0; i < read.points.size(); ++i)
+      if (const Index k = merged.input_to_merged[i]; !seen[k]) seen[k] = 1, out.normals.push_back(read.normals[i]);
+  }
+  if (merged.duplicates > 0) notes.push_back(std::to_string(merged.duplicates) + " duplicate points merged");
+  const std::size_t n = out.points.size();
+  if (n < 5)
+    throw DegenerateInput(spec + ": need at least 5 distinct points, got " + std::to_string(n) +
+                          (merged.duplicates > 0 ? " (" + std::to_string(merged.duplicates) + " duplicates merged)" : ""));
+  // Within 1e-5 of their size of a line (6 printed significant digits leave a line within
+  // about 1.5e-6 of it): a curve.
+  if (mesh::spread_dimension(out.points, 1e-5 * mesh::bbox_diagonal(out.points)) < 2)
+    throw DegenerateInput(spec + ": all " + std::to_string(n) + " points lie on a line: no surface to reconstruct");
+  return out;
+}
+
 }  // namespace
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling) {
@@ -113,7 +137,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     load_mesh_samples(std::move(*mesh), spec, out);
     return out;
   }
-  PointSet points = io::read_points(spec);
+  PointSet points = distinct_points(io::read_points(spec), spec, out.notes);
   out.source = "points";
   if (points.has_normals()) {
     out.notes.push_back("normal lines from the file");

@@ -11,6 +11,23 @@ namespace envcrust::mesh {
 /// Diagonal of the axis-aligned bounding box of the points (0 for fewer than 2 points).
 double bbox_diagonal(const std::vector<Point3>& points);
 
+/// Distinct points in order of first occurrence, and the map from input to them.
+struct MergedPoints {
+  std::vector<Point3> points;
+  std::vector<Index> input_to_merged;
+  std::size_t duplicates = 0;  ///< input points dropped as exact copies of an earlier one
+};
+
+/// Merge exact duplicates: each group of equal points is represented by its first occurrence.
+/// Deterministic whatever the thread schedule.
+/// @throws InvalidInput on a non-finite coordinate ("point 12 has a non-finite coordinate").
+MergedPoints merge_duplicate_points(const std::vector<Point3>& points);
+
+/// How many independent directions the points spread in by more than `tolerance` (0 to 3):
+/// 0 when all lie within it of one point, 1 of a line, 2 of a plane. Greedy: the farthest
+/// point from the first, then from their line, then from the plane of the three.
+int spread_dimension(const std::vector<Point3>& points, double tolerance);
+
 /// Total area of the triangles.
 double total_area(const TriangleMesh& mesh);
 

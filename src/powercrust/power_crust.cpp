@@ -2,6 +2,7 @@
 #include "stages.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 
 #include <tbb/task_arena.h>
 
@@ -43,15 +44,15 @@ void count_labels(const std::vector<Pole>& poles, PowerCrustStats& stats) {
 PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrustOptions& options,
                              const Progress& progress) {
   const Thresholds thresholds = check_options(options);
-  MergedSamples merged = merge_duplicates(points);
-  check_dimension(merged.samples);
+  mesh::MergedPoints merged = mesh::merge_duplicate_points(points);
+  check_dimension(merged.points);
 
   PowerCrustResult result;
   PowerCrustStats& stats = result.stats;
   stats.input_points = points.size();
   stats.duplicate_points = merged.duplicates;
-  result.samples = std::move(merged.samples);
-  result.input_to_sample = std::move(merged.input_to_sample);
+  result.samples = std::move(merged.points);
+  result.input_to_sample = std::move(merged.input_to_merged);
   result.bounding_points = bounding_points(result.samples, options.bounding_box_scale);
   if (merged.duplicates > 0)
     result.warnings.push_back(std::to_string(merged.duplicates) + " duplicate points merged");

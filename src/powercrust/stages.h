@@ -24,17 +24,6 @@ struct Thresholds {
 /// @throws InvalidOptions naming the field and value.
 Thresholds check_options(const PowerCrustOptions& options);
 
-/// Distinct points in order of first occurrence, and the map from input to them.
-struct MergedSamples {
-  std::vector<Point3> samples;
-  std::vector<Index> input_to_sample;
-  std::size_t duplicates = 0;
-};
-
-/// Refuse non-finite coordinates and merge exact duplicates (METHOD 4.1).
-/// @throws InvalidInput on a non-finite coordinate.
-MergedSamples merge_duplicates(const std::vector<Point3>& points);
-
 /// Refuse fewer than 5 distinct points and collinear or coplanar sets.
 /// @throws DegenerateInput.
 void check_dimension(const std::vector<Point3>& samples);

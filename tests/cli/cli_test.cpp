@@ -324,7 +324,7 @@ TEST_F(CliTest, powercrust_refuses_coplanar_points) {
   }
   const auto r = run_envcrust("powercrust " + path("flat.xyz") + " -o " + path("x.ply"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "envcrust: error: all 10 points are coplanar: nothing to reconstruct\n");
+  EXPECT_EQ(r.err, "envcrust: error: " + path("flat.xyz") + ": all 10 points are coplanar: nothing to reconstruct\n");
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
@@ -506,6 +506,48 @@ TEST_F(CliTest, reconstruct_too_few_points_names_the_file) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "envcrust: error: " + path("few.xyz") + ": boundary detection needs at least neighbors + 1 = 33 points (got 20)\n");
   EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
+// Points on a line, or one point repeated, are no surface: refused with the file's name
+// before any stage runs.
+TEST_F(CliTest, reconstruct_refuses_points_on_a_line_and_repeated_points) {
+  {
+    std::ofstream out(path("line.xyz"));
+    for (int i = 0; i < 100; ++i) out << i / 7.0 << " " << 2 * i / 7.0 << " " << -i / 7.0 << "\n";  // 6 digits
+  }
+  const auto line = run_envcrust("reconstruct " + path("line.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(line.exit_code, 1);
+  EXPECT_EQ(line.err, "envcrust: error: " + path("line.xyz") + ": all 100 points lie on a line: no surface to reconstruct\n");
+  {
+    std::ofstream out(path("same.xyz"));
+    for (int i = 0; i < 50; ++i) out << (i % 2 ? "1 2 3\n" : "1 2 4\n");
+  }
+  const auto same = run_envcrust("reconstruct " + path("same.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(same.exit_code, 1);
+  EXPECT_EQ(same.err,
+            "envcrust: error: " + path("same.xyz") + ": need at least 5 distinct points, got 2 (48 duplicates merged)\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
+// A scan that repeats its points (overlapping views written out together) reconstructs as
+// the points once: before the merge, every copy read as a zero spacing and the envelope came
+// out with holes ("the reconstruction is empty").
+TEST_F(CliTest, reconstruct_merges_repeated_points) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 4000 --seed 5 -q -o " + path("c.xyz")).exit_code, 0);
+  const std::string once = envcrust::testing::slurp(path("c.xyz"));
+  {
+    std::ofstream out(path("twice.xyz"));
+    out << once << once;
+  }
+  const auto a = run_envcrust_json("reconstruct " + path("c.xyz") + " --no-analysis -o " + path("a.ply") + " --json");
+  const auto b = run_envcrust_json("reconstruct " + path("twice.xyz") + " -r builtin:cylinder -o " + path("b.ply") +
+                                   " --json");
+  EXPECT_EQ(b["input_points"], 4000);
+  EXPECT_EQ(b["notes"][0], "4000 duplicate points merged");
+  EXPECT_EQ(b["envelope"]["rho"], a["envelope"]["rho"]);
+  EXPECT_EQ(b["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(b["analysis"]["boundary_loops"], 2);
+  EXPECT_LT(b["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 }
 
 TEST_F(CliTest, reconstruct_a_moebius_mesh) {

@@ -1,14 +1,10 @@
-// Input and option checks of power_crust: finiteness, duplicates, dimension, option ranges.
+// Input and option checks of power_crust: dimension of the input, option ranges.
 #include "stages.h"
 
 #include "envcrust/errors.h"
 
-#include <tbb/parallel_sort.h>
-
 #include <cmath>
-#include <numeric>
 #include <sstream>
-#include <tuple>
 
 namespace envcrust::powercrust {
 namespace {
@@ -42,41 +38,6 @@ Thresholds check_options(const PowerCrustOptions& options) {
   if (options.second_pass_threshold)
     t.second_pass = check_unit_range("second_pass_threshold", *options.second_pass_threshold);
   return t;
-}
-
-MergedSamples merge_duplicates(const std::vector<Point3>& points) {
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point3& p = points[i];
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw InvalidInput("point " + std::to_string(i) + " has a non-finite coordinate");
-  }
-  // Sorting indices with the index as last key gives each group of equal points its first
-  // occurrence as representative, whatever the sort's thread schedule.
-  std::vector<Index> order(points.size());
-  std::iota(order.begin(), order.end(), Index{0});
-  tbb::parallel_sort(order.begin(), order.end(), [&](Index a, Index b) {
-    const Point3& p = points[a];
-    const Point3& q = points[b];
-    return std::make_tuple(p.x(), p.y(), p.z(), a) < std::make_tuple(q.x(), q.y(), q.z(), b);
-  });
-  std::vector<Index> representative(points.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const bool same = k > 0 && points[order[k]] == points[order[k - 1]];
-    representative[order[k]] = same ? representative[order[k - 1]] : order[k];
-  }
-  MergedSamples out;
-  out.input_to_sample.resize(points.size());
-  out.samples.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (representative[i] == i) {
-      out.input_to_sample[i] = static_cast<Index>(out.samples.size());
-      out.samples.push_back(points[i]);
-    } else {
-      out.input_to_sample[i] = out.input_to_sample[representative[i]];
-    }
-  }
-  out.duplicates = points.size() - out.samples.size();
-  return out;
 }
 
 void check_dimension(const std::vector<Point3>& samples) {
