@@ -7,6 +7,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
+#include "envcrust/mesh.h"
 #include "envcrust/pipeline.h"
 
 #include <algorithm>
@@ -251,6 +252,11 @@ void run_reconstruct(ReconstructCommand& cmd) {
       reason << ": rho " << e.rho << " is too small for the input's gaps (up to " << e.input_coverage
              << "); use --rho " << e.min_rho_for_gaps << " or more, or input with gaps below "
              << e.input_coverage * e.rho / e.min_rho_for_gaps;
+    else if (const double diagonal = mesh::bbox_diagonal(loaded.samples.points);
+             cmd.options.method == pipeline::Method::Envelope && e.rho > 0.25 * diagonal)
+      reason << ": rho " << e.rho << " is more than a quarter of the input's size (diagonal " << diagonal
+             << "), so its envelope is one blob around it with no sheets to take apart; use a rho below "
+             << 0.1 * diagonal << " (or leave --rho out: auto)";
     throw NumericalFailure(reason.str());
   }
   io::write_mesh(cmd.output, result.mesh);

@@ -52,6 +52,7 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
     out.samples.points.push_back(CGAL::centroid(a, b, c));
     out.samples.normals.push_back(n / len);
   }
+  if (out.samples.points.empty()) throw InvalidInput(spec + ": the mesh has no face of positive area");
   out.notes.push_back("mesh vertices and face centres; " + std::to_string(out.samples.boundary.size()) +
                       " border loops");
 }

@@ -107,6 +107,48 @@ std::vector<EnvelopeSample> sheet_candidates(const SurfaceSamples& s, const std:
   return out;
 }
 
+namespace {
+
+// How one boundary segment a -> b is swept: rings `step` apart along it (`pieces`), each a
+// half-circle of `arcs` + 1 candidates, and at a convex corner `sweeps` - 1 half-circles of
+// the lune.
+struct RimSegment {
+  double step = 0.0;
+  int arcs = 0, pieces = 0, sweeps = 0;
+};
+
+RimSegment rim_segment(const BoundaryVertex& a, const BoundaryVertex& b, double rho, double spacing_rel_rho,
+                       double step_rel_h) {
+  RimSegment r;
+  r.step = step_rel_h * (spacing_rel_rho * rho);
+  // Counted in doubles first: a tiny rho must not overflow the int.
+  r.arcs = static_cast<int>(std::clamp(std::ceil(std::numbers::pi * rho / r.step), 4.0, 1e9));
+  const double len = std::sqrt(CGAL::squared_distance(a.position, b.position));
+  r.pieces = static_cast<int>(std::clamp(std::ceil(len / r.step), 1.0, 1e9));
+  if (a.is_corner && a.tangent * a.conormal_next > 0) {
+    const double angle = std::acos(std::clamp(a.conormal * a.conormal_next, -1.0, 1.0));
+    r.sweeps = static_cast<int>(std::clamp(std::ceil(angle * rho / r.step), 1.0, 1e9));
+  }
+  return r;
+}
+
+}  // namespace
+
+double rim_candidate_count(const std::vector<BoundaryCurve>& boundary,
+                           const std::vector<std::vector<double>>& rim_rho, double spacing_rel_rho,
+                           double step_rel_h) {
+  double count = 0.0;
+  for (std::size_t ci = 0; ci < boundary.size(); ++ci) {
+    const auto& vertices = boundary[ci].vertices;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const RimSegment r = rim_segment(vertices[i], vertices[(i + 1) % vertices.size()], rim_rho[ci][i],
+                                       spacing_rel_rho, step_rel_h);
+      count += double(r.pieces) * (r.arcs + 1) + std::max(0.0, double(r.sweeps) - 1) * (r.arcs - 1);
+    }
+  }
+  return count;
+}
+
 std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& boundary,
                                            const std::vector<std::vector<double>>& rim_rho,
                                            double spacing_rel_rho, double step_rel_h) {
@@ -118,12 +160,10 @@ std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& bou
       // The segment from vertex i takes vertex i's rho (adaptive rho is Lipschitz, so its
       // neighbour's differs little).
       const double rho = rim_rho[ci][i];
-      const double step = step_rel_h * (spacing_rel_rho * rho);
-      const int arcs = std::max(4, static_cast<int>(std::ceil(std::numbers::pi * rho / step)));
       const BoundaryVertex& a = vertices[i];
       const BoundaryVertex& b = vertices[(i + 1) % vertices.size()];
-      const double len = std::sqrt(CGAL::squared_distance(a.position, b.position));
-      const int pieces = std::max(1, static_cast<int>(std::ceil(len / step)));
+      const RimSegment segment = rim_segment(a, b, rho, spacing_rel_rho, step_rel_h);
+      const int arcs = segment.arcs, pieces = segment.pieces, sweeps = segment.sweeps;
       // Conormal leaving a corner is conormal_next; the segment interpolates to b's arriving one.
       const Vector3 ca = a.is_corner ? a.conormal_next : a.conormal;
       Vector3 nb = b.normal;
@@ -142,9 +182,7 @@ std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& bou
         }
       }
       // Lune at a convex corner: the arriving edge runs out past the leaving edge's side.
-      if (a.is_corner && a.tangent * a.conormal_next > 0) {
-        const double angle = std::acos(std::clamp(a.conormal * a.conormal_next, -1.0, 1.0));
-        const int sweeps = std::max(1, static_cast<int>(std::ceil(angle * rho / step)));
+      if (sweeps > 0) {
         for (int s = 1; s < sweeps; ++s) {
           const double f = static_cast<double>(s) / sweeps;
           const Vector3 d = unit((1 - f) * a.conormal + f * a.conormal_next);

@@ -24,4 +24,10 @@ std::vector<EnvelopeSample> rim_candidates(const std::vector<BoundaryCurve>& bou
                                            const std::vector<std::vector<double>>& rim_rho,
                                            double spacing_rel_rho, double step_rel_h);
 
+/// The number of candidates rim_candidates makes for these arguments, computed without making
+/// them (a rho far too small for the curves would exhaust memory).
+double rim_candidate_count(const std::vector<BoundaryCurve>& boundary,
+                           const std::vector<std::vector<double>>& rim_rho, double spacing_rel_rho,
+                           double step_rel_h);
+
 }  // namespace envcrust::envelope

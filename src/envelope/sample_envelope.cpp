@@ -25,6 +25,7 @@ constexpr double kCandidatesPerH2 = 12.0;  // METHOD.md §3.1 asks for >= 10 per
 // the result is empty at rho = gap / 2.97, but not at gap / 2.98 or gap / 2.84 and above;
 // 2.5 keeps a margin.
 constexpr double kGapsPerRho = 2.5;
+constexpr double kMaxRimCandidates = 1e7;  // measured: 7.9M (2,000 cylinder samples, rho 0.0009) peaked at 2.3 GB
 constexpr double kRimStepRelH = 1.0 / 3.3;  // rims resampled so that ~10 candidates fall per h^2
 
 std::string format(double x) {
@@ -164,6 +165,13 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     for (const auto& c : surface.boundary) rim_rho.emplace_back(c.vertices.size(), out.rho);
   }
 
+  // The rims' candidates grow as the curves' length over rho (the sheets' are at most 128
+  // per input sample): refuse a rho they could not be stored for, before making them.
+  if (const double rims = rim_candidate_count(surface.boundary, rim_rho, options.spacing_rel_rho, kRimStepRelH);
+      rims > kMaxRimCandidates)
+    throw DegenerateInput("rho " + format(out.rho) + " is too small for the boundary curves: their half-tubes would "
+                          "take " + format(rims) + " envelope candidates (at most " + format(kMaxRimCandidates) +
+                          "); use rho >= " + format(out.rho * rims / kMaxRimCandidates) + " or more");
   std::vector<EnvelopeSample> candidates = sheet_candidates(surface, rho, options.spacing_rel_rho, kCandidatesPerH2,
                                                             options.seed, out.input_neighbour_distance);
   out.input_coverage = out.input_neighbour_distance.empty()

@@ -262,6 +262,29 @@ TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// A rho far beyond the surface's size wraps it in one blob (no sheets, an empty result), and
+// one far below the sampling would make more rim candidates than memory holds: both say why
+// and which rho to use instead, without writing the output.
+TEST_F(CliTest, reconstruct_with_an_absurd_rho_says_why_and_what_to_use) {
+  const auto big = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho 1e6 -o " + path("x.ply"));
+  EXPECT_EQ(big.exit_code, 1);
+  EXPECT_EQ(big.err.rfind("envcrust: error: builtin:cylinder: the reconstruction is empty: rho 1e+06 is more than a "
+                          "quarter of the input's size (diagonal 3.46",
+                          0),
+            0u)
+      << big.err;
+  EXPECT_NE(big.err.find("use a rho below 0.346"), std::string::npos) << big.err;
+  const auto tiny = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho 1e-6 -o " + path("x.ply"));
+  EXPECT_EQ(tiny.exit_code, 1);
+  EXPECT_EQ(tiny.err.rfind("envcrust: error: rho 1e-06 is too small for the boundary curves: their half-tubes would "
+                           "take ",
+                           0),
+            0u)
+      << tiny.err;
+  EXPECT_NE(tiny.err.find("(at most 1e+07); use rho >= "), std::string::npos) << tiny.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 // 300 samples of the cylinder are too sparse for half its reach: the automatic rho bridges
 // their gaps instead (reported), and the open cylinder still comes out as an annulus.
 TEST_F(CliTest, reconstruct_sparse_input_gets_a_rho_that_bridges_its_gaps) {
@@ -610,6 +633,17 @@ TEST_F(CliTest, reconstruct_drops_repeated_faces_of_a_mesh) {
   EXPECT_NE(std::find(notes.begin(), notes.end(), "2 repeated or degenerate faces dropped"), notes.end());
   EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
   EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+}
+
+TEST_F(CliTest, reconstruct_refuses_a_mesh_of_zero_area_naming_it) {
+  {
+    std::ofstream f(path("flat.off"));
+    f << "OFF\n3 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n3 0 2 1\n";  // collinear, and again reversed
+  }
+  const auto r = run_envcrust("reconstruct " + path("flat.off") + " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("flat.off") + ": the mesh has no face of positive area\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
 TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {

@@ -1,0 +1,50 @@
+// rim_candidate_count counts what rim_candidates makes (rings along the curves, lunes at the
+// square's convex corners), and sample_envelope refuses a rho whose rims could not be stored,
+// naming a rho that could.
+#include "envcrust/envelope.h"
+#include "envcrust/errors.h"
+#include "fixtures/surface_samples.h"
+
+#include "envelope_candidates.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace envcrust;
+
+TEST(RimCandidateCount, counts_what_rim_candidates_makes) {
+  for (const char* name : {"square", "cylinder", "trefoil-ribbon"}) {
+    const auto samples = fixtures::builtin_samples(name, 2000);
+    for (const double rho : {0.05, 0.013}) {
+      std::vector<std::vector<double>> rim_rho;
+      for (const auto& c : samples.boundary) rim_rho.emplace_back(c.vertices.size(), rho);
+      const auto made = envelope::rim_candidates(samples.boundary, rim_rho, 0.25, 1 / 3.3);
+      EXPECT_EQ(envelope::rim_candidate_count(samples.boundary, rim_rho, 0.25, 1 / 3.3),
+                static_cast<double>(made.size()))
+          << name << " rho " << rho;
+    }
+  }
+}
+
+TEST(RimCandidateCount, a_rho_too_small_for_the_rims_is_refused_before_they_are_made) {
+  const auto samples = fixtures::builtin_samples("cylinder", 2000);
+  envelope::EnvelopeOptions options;
+  options.rho = 1e-6;
+  try {
+    (void)envelope::sample_envelope(samples, options);
+    FAIL() << "expected DegenerateInput";
+  } catch (const DegenerateInput& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("rho 1e-06 is too small for the boundary curves: their half-tubes would take ", 0), 0u) << m;
+    // The rho it names keeps the rims at the limit: 1e7 candidates.
+    const auto at = m.find("use rho >= ");
+    ASSERT_NE(at, std::string::npos) << m;
+    const double named = std::stod(m.substr(at + 11));
+    std::vector<std::vector<double>> rim_rho;
+    for (const auto& c : samples.boundary) rim_rho.emplace_back(c.vertices.size(), 1.01 * named);
+    EXPECT_LT(envelope::rim_candidate_count(samples.boundary, rim_rho, options.spacing_rel_rho, 1 / 3.3), 1e7);
+    for (auto& r : rim_rho) r.assign(r.size(), 0.9 * named);
+    EXPECT_GT(envelope::rim_candidate_count(samples.boundary, rim_rho, options.spacing_rel_rho, 1 / 3.3), 1e7);
+  }
+}
