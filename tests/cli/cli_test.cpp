@@ -266,23 +266,19 @@ TEST_F(CliTest, reconstruct_refuses_a_bad_rho) {
 // one far below the sampling would make more rim candidates than memory holds: both say why
 // and which rho to use instead, without writing the output.
 TEST_F(CliTest, reconstruct_with_an_absurd_rho_says_why_and_what_to_use) {
-  const auto big = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho 1e6 -o " + path("x.ply"));
-  EXPECT_EQ(big.exit_code, 1);
-  EXPECT_EQ(big.err.rfind("envcrust: error: builtin:cylinder: the reconstruction is empty: rho 1e+06 is more than a "
-                          "quarter of the input's size (diagonal 3.46",
-                          0),
-            0u)
-      << big.err;
-  EXPECT_NE(big.err.find("use a rho below 0.346"), std::string::npos) << big.err;
-  const auto tiny = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho 1e-6 -o " + path("x.ply"));
-  EXPECT_EQ(tiny.exit_code, 1);
-  EXPECT_EQ(tiny.err.rfind("envcrust: error: rho 1e-06 is too small for the boundary curves: their half-tubes would "
-                           "take ",
-                           0),
-            0u)
-      << tiny.err;
-  EXPECT_NE(tiny.err.find("(at most 1e+07); use rho >= "), std::string::npos) << tiny.err;
-  EXPECT_FALSE(fs::exists(path("x.ply")));
+  auto expect_refused = [&](const std::string& rho, const std::string& starts, const std::string& names) {
+    const auto r = run_envcrust("reconstruct builtin:cylinder -n 2000 --rho " + rho + " -o " + path("x.ply"));
+    EXPECT_EQ(r.exit_code, 1) << rho;
+    EXPECT_EQ(r.err.rfind("envcrust: error: " + starts, 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(names), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("x.ply"))) << rho;
+  };
+  expect_refused("1e6",
+                 "builtin:cylinder: the reconstruction is empty: rho 1e+06 is more than a quarter of the input's "
+                 "size (diagonal 3.46",
+                 "use a rho below 0.346");
+  expect_refused("1e-6", "rho 1e-06 is too small for the boundary curves: their half-tubes would take ",
+                 "(at most 1e+07); use rho >= ");
 }
 
 // 300 samples of the cylinder are too sparse for half its reach: the automatic rho bridges
