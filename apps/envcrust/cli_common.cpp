@@ -3,7 +3,10 @@
 
 #include <unistd.h>
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -40,6 +43,32 @@ std::string percent(double fraction) {
   out.precision(3);
   out << fraction * 100.0 << '%';
   return out.str();
+}
+
+CLI::Validator whole_number_at_least(long long min) {
+  return CLI::Validator(
+      [min](std::string& text) -> std::string {
+        long long value = 0;
+        const char* end = text.data() + text.size();
+        const auto [at, error] = std::from_chars(text.data(), end, value);
+        if (error == std::errc() && at == end && value >= min) return "";
+        return "must be a whole number >= " + std::to_string(min) + " (got '" + text + "')";
+      },
+      "INT>=" + std::to_string(min));
+}
+
+CLI::Validator number_above(double min, bool inclusive) {
+  std::ostringstream bound;
+  bound << (inclusive ? ">= " : "> ") << min;
+  return CLI::Validator(
+      [min, inclusive, bound = bound.str()](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool parsed = !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+        if (parsed && (inclusive ? value >= min : value > min)) return "";
+        return "must be a number " + bound + " (got '" + text + "')";
+      },
+      "NUMBER" + bound.str());
 }
 
 }  // namespace envcrust::cli

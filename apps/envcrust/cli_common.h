@@ -28,6 +28,15 @@ void print_json(const nlohmann::json& document);
 /// "1.23%" style formatting of a fraction.
 std::string percent(double fraction);
 
+/// Check of an option holding a count: a whole number >= `min`, else "must be a whole number
+/// >= 1 (got '-5')" (CLI11's PositiveNumber takes 2.5, and a negative value read into an
+/// unsigned option wraps around to a huge count).
+CLI::Validator whole_number_at_least(long long min);
+
+/// Check of a real option: a finite number above `min` (or at least `min` when `inclusive`),
+/// else "must be a number > 0 (got '-1')" (CLI11's own checks print the whole double range).
+CLI::Validator number_above(double min, bool inclusive = false);
+
 /// Usage error raised by a subcommand after parsing (exit code 2, like CLI11's own errors).
 class UsageError : public std::runtime_error {
  public:

@@ -77,11 +77,15 @@ void register_analyze(CLI::App& app) {
                   "Analyze the knot type of one closed polyline (.polyline/.xyz) instead of a mesh");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   sub->add_option("--samples", cmd->options.distance.samples,
-                  "Area samples per side for distance measurement")->capture_default_str();
+                  "Area samples per side for distance measurement")
+      ->capture_default_str()
+      ->check(whole_number_at_least(0));
   sub->add_option("--seed", cmd->options.distance.seed, "Seed of the distance sampling")->capture_default_str();
   sub->add_option("--knot-seed", cmd->options.knot.seed, "Seed of the knot projections")->capture_default_str();
   sub->add_option("--projections", cmd->options.knot.projections,
-                  "Projections voted over for knot types")->capture_default_str()->check(CLI::PositiveNumber);
+                  "Projections voted over for knot types")
+      ->capture_default_str()
+      ->check(whole_number_at_least(1));
   sub->add_flag("--no-knots", cmd->no_knots, "Skip knot types and linking numbers of boundary loops");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_analyze(*cmd); });

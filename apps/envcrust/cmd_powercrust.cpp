@@ -107,7 +107,9 @@ void register_powercrust(CLI::App& app) {
   sub->add_option("-o,--output", cmd->output, "Crust mesh (.ply/.off/.obj)")->required();
   sub->add_option("--medial-axis", cmd->medial_axis_output, "Write the inner power shape's triangles as a mesh");
   sub->add_option("--poles", cmd->poles_output, "Write the poles (x y z radius label) as text");
-  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME inputs")->capture_default_str();
+  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME inputs")
+      ->capture_default_str()
+      ->check(whole_number_at_least(1));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();
   const std::map<std::string, powercrust::LabelPreset> presets = {{"code", powercrust::LabelPreset::Code},
                                                                   {"readme", powercrust::LabelPreset::Readme}};

@@ -80,7 +80,9 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
       ->check(CLI::Range(0.0, 1.0));
   sub.add_option("--spacing", cmd.options.envelope.spacing_rel_rho,
                  "Envelope sample spacing as a fraction of rho")->capture_default_str();
-  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME inputs")->capture_default_str();
+  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME inputs")
+      ->capture_default_str()
+      ->check(whole_number_at_least(1));
   sub.add_option("--noise", cmd.sampling.noise_rel_diag,
                  "Gaussian noise on builtin:NAME samples, fraction of the diagonal")->capture_default_str();
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
@@ -92,7 +94,9 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "nearest sample; normals, if every file has them, are outward conormals)")->excludes(no_boundary);
   sub.add_option("--boundary-min-width", cmd.sampling.boundary.min_loop_width,
                  "Point files: drop detected loops narrower than this many local spacings "
-                 "(sampling gaps, not holes); 0 keeps all")->capture_default_str();
+                 "(sampling gaps, not holes); 0 keeps all")
+      ->capture_default_str()
+      ->check(number_above(0, true));
   sub.add_flag("--rho-adaptive",
                [&cmd](std::int64_t) { cmd.options.envelope.rho_mode = envelope::RhoMode::Adaptive; },
                "Vary rho with the local feature size: rho(p) = alpha lfs(p), clamped to "
@@ -420,13 +424,13 @@ void register_reconstruct(CLI::App& app) {
   sub->add_option("--orientable-cut", cmd->options.sheet.orientable_cut_rel_rho,
                   "With --orientable: half-width of the band removed around a seam, in rho")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(number_above(0));
   sub->add_option_function<double>(
          "--cut-handles", [cmd](double k) { cmd->cut_handles = k; },
          "Remove every geodesic ball of this radius (in rho) where the result is not a disc once its own "
          "holes are capped, and close each hole with a disc: handles and cross-caps at thin, sparsely "
          "sampled parts (reported; 0: off; default: 1.5 for point files and meshes, 0 for built-in surfaces)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_above(0, true));
   sub->add_flag("--keep-cut-holes", [cmd](std::int64_t) { cmd->options.sheet.fill_cut_holes = false; },
                 "With --orientable or --cut-handles: leave the holes the cuts make open instead of closing them "
                 "(those along a boundary curve are never closed)");

@@ -229,11 +229,11 @@ void register_render(CLI::App& app) {
       ->transform(CLI::CheckedTransformer(point_styles, CLI::ignore_case))
       ->default_str("spheres");
   sub->add_option("--point-radius", cmd->point_radius, "Radius of point spheres in model units (default 0.4% of the diagonal)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_above(0));
   sub->add_flag("--boundary", cmd->use_boundary,
                 "Draw the boundary loops of mesh inputs as tubes (builtin:NAME inputs always show theirs)");
   sub->add_option("--tube-radius", cmd->tube_radius, "Radius of boundary tubes in model units (default 0.6% of the diagonal)")
-      ->check(CLI::PositiveNumber);
+      ->check(number_above(0));
   sub->add_option("--boundary-color", cmd->boundary_color, "One colour for all boundary tubes, #rrggbb (default: a palette)");
   sub->add_option("--balls", cmd->balls,
                   "Balls 'x y z radius [label]' (e.g. powercrust --poles) drawn translucent over the i-th input");

@@ -121,7 +121,7 @@ void register_sample(CLI::App& app) {
       "sample", "Sample a built-in surface uniformly by area, or write its exact tessellation");
   sub->add_option("surface", cmd->surface, "Built-in surface name (see --list)");
   sub->add_option("-o,--output", cmd->output, "Output file (.xyz/.ply points; .ply/.off/.obj with --mesh)");
-  sub->add_option("-n,--count", cmd->sampling.count, "Number of points")->capture_default_str();
+  sub->add_option("-n,--count", cmd->sampling.count, "Number of points")->capture_default_str()->check(whole_number_at_least(1));
   sub->add_option("--noise", cmd->sampling.noise_rel_diag,
                   "Gaussian noise sigma as a fraction of the bounding-box diagonal (0.0025 = 0.25%)")
       ->capture_default_str();

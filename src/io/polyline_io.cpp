@@ -3,6 +3,7 @@
 
 #include "io_detail.h"
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -78,13 +79,17 @@ Polyline read_polyline(const std::filesystem::path& path) {
   } else {
     detail::unknown_extension(path, ".polyline, .xyz, .txt, .pts");
   }
-  // Closed curves are stored without repeating their first point.
+  // A point repeated in a row is one vertex (a zero-length edge says nothing), and closed
+  // curves are stored without repeating their first point.
+  const std::size_t read = curve.size();
+  curve.erase(std::unique(curve.begin(), curve.end()), curve.end());
+  const bool had_repeats = curve.size() < read;
   if (curve.size() > 1 && curve.back() == curve.front()) {
     curve.pop_back();
   }
   if (curve.size() < 3) {
     detail::fail(path, "polyline has " + std::to_string(curve.size()) +
-                           " points (need at least 3)");
+                           (had_repeats ? " distinct" : "") + " points (need at least 3)");
   }
   return curve;
 }

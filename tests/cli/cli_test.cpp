@@ -50,6 +50,28 @@ TEST_F(CliTest, sample_list_names_every_surface_with_its_topology) {
   EXPECT_TRUE(saw_moebius);
 }
 
+// Counts and sizes are checked as typed: a negative count read into an unsigned option used
+// to wrap around to a huge one (std::bad_alloc, exit 3).
+TEST_F(CliTest, counts_and_sizes_are_checked_with_a_plain_message) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"sample torus -n -5 -o " + path("t.xyz"), "--count: must be a whole number >= 1 (got '-5')"},
+      {"sample torus -n 2.5 -o " + path("t.xyz"), "--count: must be a whole number >= 1 (got '2.5')"},
+      {"reconstruct builtin:torus -n -5 -o " + path("t.ply"), "--count: must be a whole number >= 1 (got '-5')"},
+      {"analyze builtin:torus --samples -5", "--samples: must be a whole number >= 0 (got '-5')"},
+      {"reconstruct builtin:cylinder --cut-handles -2 -o " + path("t.ply"),
+       "--cut-handles: must be a number >= 0 (got '-2')"},
+      {"reconstruct builtin:cylinder --orientable-cut 0 -o " + path("t.ply"),
+       "--orientable-cut: must be a number > 0 (got '0')"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = run_envcrust(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, "envcrust: usage error: " + message + "\n") << args;
+  }
+  EXPECT_FALSE(fs::exists(path("t.xyz")));
+  EXPECT_FALSE(fs::exists(path("t.ply")));
+}
+
 TEST_F(CliTest, sample_writes_the_requested_number_of_points_deterministically) {
   ASSERT_EQ(run_envcrust("sample cylinder -n 500 --seed 7 --normals -q -o " + path("a.xyz")).exit_code, 0);
   ASSERT_EQ(run_envcrust("sample cylinder -n 500 --seed 7 --normals -q -o " + path("b.xyz")).exit_code, 0);

@@ -54,6 +54,13 @@ TEST_F(PolylineIo, reports_too_few_points) {
             file.string() + ": polyline has 2 points (need at least 3)");
 }
 
+TEST_F(PolylineIo, repeated_points_count_once) {
+  const auto twice = write("c.xyz", "0 0 0\n1 0 0\n1 0 0\n0 1 0\n0 1 0\n0 0 0\n");
+  EXPECT_EQ(read_polyline(twice).size(), 3u);
+  const auto one = write("d.xyz", "1 2 3\n1 2 3\n1 2 3\n1 2 3\n");
+  EXPECT_EQ(io_error_of([&] { read_polyline(one); }), one.string() + ": polyline has 1 distinct points (need at least 3)");
+}
+
 TEST_F(PolylineIo, reports_non_finite_coordinate) {
   const auto file = write("c.polyline", "0 0 0\n1 0 inf\n0 1 0\n");
   EXPECT_EQ(io_error_of([&] { read_polyline(file); }), file.string() + ":2: non-finite coordinate");
