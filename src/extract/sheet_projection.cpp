@@ -161,10 +161,9 @@ std::vector<std::vector<std::uint32_t>> faces_of_vertices(const TriangleMesh& m)
 }
 
 // The border loops depend on the connectivity only, which no vertex move changes: a stage
-// computes them once.
-std::vector<topology::BoundaryLoop> border_loops(const TriangleMesh& m) {
-  return topology::analyze_topology(m, {.weld_identical_vertices = false}).boundary_loops;
-}
+// computes them once. Which way a loop is walked must not matter: the stages below apply
+// their moves in vertex order.
+std::vector<topology::BoundaryLoop> border_loops(const TriangleMesh& m) { return topology::boundary_loops(m); }
 
 std::vector<char> border_vertices(const TriangleMesh& m, const std::vector<topology::BoundaryLoop>& loops) {
   std::vector<char> is_border(m.vertices.size(), 0);
@@ -275,21 +274,23 @@ namespace {
 void smooth_border_loops(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>& faces_of,
                          const std::vector<topology::BoundaryLoop>& loops, const std::vector<Point3>& corners) {
   for (int round = 0; round < 2; ++round) {
+    std::vector<std::pair<Index, Point3>> moves;
     for (const auto& loop : loops) {
       const std::size_t n = loop.vertices.size();
       if (n < 4) continue;
-      std::vector<Point3> target(n);
       for (std::size_t i = 0; i < n; ++i) {
         const Point3& prev = m.vertices[loop.vertices[(i + n - 1) % n]];
         const Point3& next = m.vertices[loop.vertices[(i + 1) % n]];
         const Point3& at = m.vertices[loop.vertices[i]];
-        target[i] = at + 0.5 * (CGAL::midpoint(prev, next) - at);
         const double reach2 = CGAL::squared_distance(prev, at) + CGAL::squared_distance(at, next);
+        bool near_corner = false;
         for (const Point3& corner : corners)  // a handful (four for the square)
-          if (2.0 * CGAL::squared_distance(corner, at) < reach2) target[i] = at;
+          near_corner = near_corner || 2.0 * CGAL::squared_distance(corner, at) < reach2;
+        if (!near_corner) moves.emplace_back(loop.vertices[i], at + 0.5 * (CGAL::midpoint(prev, next) - at));
       }
-      for (std::size_t i = 0; i < n; ++i) move_if_safe(m, faces_of, loop.vertices[i], target[i]);
     }
+    std::sort(moves.begin(), moves.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [v, target] : moves) move_if_safe(m, faces_of, v, target);
   }
 }
 
@@ -399,7 +400,9 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   stats.refused = pending.size();
   // Undo the snaps that reverse the loop's order along the curve, until none is left.
   for (int round = 0; round < 8; ++round) {
-    const auto bad = out_of_order_snaps(loops, snap, boundary);
+    auto bad = out_of_order_snaps(loops, snap, boundary);
+    std::sort(bad.begin(), bad.end());
+    bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
     std::size_t undone = 0;
     for (Index v : bad) {
       if (!snap[v] || !move_if_safe(m, faces_of, v, before[v])) continue;
