@@ -77,10 +77,18 @@ PointSet read_boundary_points(const std::vector<std::string>& files) {
   return all;
 }
 
-// The distinct points of a point file (scans repeat points where views overlap; a copy would
-// read as a zero spacing), each with its first occurrence's normal; refused with the file's
-// name when fewer than 5 are left or all lie on a line.
-PointSet distinct_points(PointSet read, const std::string& spec, std::vector<std::string>& notes) {
+// The points of a point file as the stages need them: normals scaled to unit length (files
+// store them at any length; the envelope offsets by rho times the normal) and a zero one
+// refused, and repeated points merged (scans repeat points where views overlap; a copy would
+// read as a zero spacing), each keeping its first occurrence's normal; refused with the
+// file's name when fewer than 5 are left or all lie on a line.
+PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::string>& notes) {
+  for (std::size_t i = 0; i < read.normals.size(); ++i) {
+    const double length = std::sqrt(read.normals[i].squared_length());
+    if (!(length > 0) || !std::isfinite(length))
+      throw InvalidInput(spec + ": point " + std::to_string(i + 1) + " has a zero normal");
+    read.normals[i] = read.normals[i] / length;
+  }
   mesh::MergedPoints merged = mesh::merge_duplicate_points(read.points);
   PointSet out;
   out.points = std::move(merged.points);
@@ -138,7 +146,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     load_mesh_samples(std::move(*mesh), spec, out);
     return out;
   }
-  PointSet points = distinct_points(io::read_points(spec), spec, out.notes);
+  PointSet points = usable_points(io::read_points(spec), spec, out.notes);
   out.source = "points";
   if (points.has_normals()) {
     out.notes.push_back("normal lines from the file");

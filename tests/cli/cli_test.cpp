@@ -570,6 +570,19 @@ TEST_F(CliTest, reconstruct_refuses_points_on_a_line_and_repeated_points) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// Normals in a point file may have any length (they are scaled to unit length), but not
+// zero: the error names the file and the point (counted from 1 in file order).
+TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {
+  {
+    std::ofstream out(path("n.xyz"));
+    for (int i = 0; i < 40; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << " 0 0 " << (i == 6 ? 0 : 3) << "\n";
+  }
+  const auto r = run_envcrust("reconstruct " + path("n.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("n.xyz") + ": point 7 has a zero normal\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 // A scan that repeats its points (overlapping views written out together) reconstructs as
 // the points once: before the merge, every copy read as a zero spacing and the envelope came
 // out with holes ("the reconstruction is empty").
