@@ -40,6 +40,7 @@ void run_curve(const AnalyzeCommand& cmd) {
 }
 
 void run_analyze(AnalyzeCommand& cmd) {
+  if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
   if (!cmd.curve.empty()) {
     if (!cmd.mesh.empty()) throw UsageError("analyze: give either MESH or --curve, not both");
     run_curve(cmd);

@@ -43,6 +43,9 @@ std::string label_name(powercrust::PoleLabel label) {
 }
 
 void run_powercrust(PowerCrustCommand& cmd) {
+  io::check_output_path(cmd.output, io::OutputKind::Mesh);
+  if (!cmd.medial_axis_output.empty()) io::check_output_path(cmd.medial_axis_output, io::OutputKind::Mesh);
+  if (!cmd.poles_output.empty()) io::check_output_path(cmd.poles_output, io::OutputKind::Text);
   cmd.options.resolve_unknown = !cmd.keep_unknown;
   cmd.options.build_power_shape = !cmd.medial_axis_output.empty();
   const auto points = load_points(cmd);

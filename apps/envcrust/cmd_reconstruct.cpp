@@ -237,7 +237,16 @@ void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   sheet.cut_handles_rel_rho = 0;
 }
 
+// Outputs checked before the run, not after minutes of it: known extensions, existing folders.
+void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
+  io::check_output_path(cmd.output, output_kind);
+  if (!cmd.envelope_output.empty()) io::check_output_path(cmd.envelope_output, io::OutputKind::Points);
+  if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Points);
+  if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
+}
+
 void run_reconstruct(ReconstructCommand& cmd) {
+  check_outputs(cmd, io::OutputKind::Mesh);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   if (cmd.use_remesh) cmd.options.remesh = cmd.remesh;
@@ -369,6 +378,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
 
 
 void run_envelope(ReconstructCommand& cmd) {
+  check_outputs(cmd, io::OutputKind::Points);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);

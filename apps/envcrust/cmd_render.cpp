@@ -145,6 +145,7 @@ std::optional<render::Font> load_font(const RenderCommand& cmd, std::vector<std:
 }
 
 void run_render(RenderCommand& cmd) {
+  io::check_output_path(cmd.output, io::OutputKind::Image);
   const auto start = std::chrono::steady_clock::now();
   parse_size(cmd.size, cmd.options);
   cmd.options.view = parse_view(cmd.view);

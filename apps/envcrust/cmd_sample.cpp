@@ -64,6 +64,8 @@ void run_sample(const SampleCommand& cmd) {
   if (cmd.surface.empty()) throw UsageError("sample: a SURFACE is required (see --list)");
   if (cmd.output.empty() && cmd.boundary_output.empty())
     throw UsageError("sample: an output file is required (-o OUT)");
+  if (!cmd.output.empty()) io::check_output_path(cmd.output, cmd.mesh ? io::OutputKind::Mesh : io::OutputKind::Points);
+  if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Text);
   const auto surface = surfaces::make_builtin(cmd.surface);
   nlohmann::json report = {{"surface", cmd.surface}};
   if (!cmd.output.empty()) {

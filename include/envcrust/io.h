@@ -61,6 +61,19 @@ void write_atomic(const std::filesystem::path& path, bool binary,
 /// Write a text file atomically (reports, JSON).
 void write_text(const std::filesystem::path& path, const std::string& text);
 
+/// What an output file is written as, for check_output_path.
+enum class OutputKind {
+  Mesh,    ///< write_mesh: .ply, .off, .obj
+  Points,  ///< write_points: .xyz, .ply
+  Image,   ///< write_png: .png
+  Text     ///< write_text, write_polyline: any name
+};
+
+/// Check before a long run that `path` can be written as `kind`: a file name with a known
+/// extension, in a folder that exists. @throws IoError naming the file ("x.unknown: unknown
+/// extension '.unknown' (expected .ply, .off, .obj)", "out/x.ply: folder 'out' does not exist").
+void check_output_path(const std::filesystem::path& path, OutputKind kind);
+
 /// Balls (e.g. the polar balls of the Power Crust): centre, radius and an optional label.
 struct BallSet {
   std::vector<Point3> centres;

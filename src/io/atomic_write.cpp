@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 #include <system_error>
 
@@ -78,6 +79,29 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   write_atomic(path, false, [&](std::ostream& out) {
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
   });
+}
+
+void check_output_path(const std::filesystem::path& path, OutputKind kind) {
+  if (path.filename().empty()) {
+    detail::fail(path, "not a file name");
+  }
+  const std::string extension = extension_of(path);
+  auto expect = [&](std::initializer_list<const char*> known, const char* listed) {
+    for (const char* k : known)
+      if (extension == k) return;
+    detail::unknown_extension(path, listed);
+  };
+  switch (kind) {
+    case OutputKind::Mesh: expect({"ply", "off", "obj"}, ".ply, .off, .obj"); break;
+    case OutputKind::Points: expect({"xyz", "ply"}, ".xyz, .ply"); break;
+    case OutputKind::Image: expect({"png"}, ".png"); break;
+    case OutputKind::Text: break;
+  }
+  const std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) {
+    detail::fail(path, "folder '" + folder.string() + "' does not exist");
+  }
 }
 
 }  // namespace envcrust::io

@@ -570,6 +570,21 @@ TEST_F(CliTest, reconstruct_refuses_points_on_a_line_and_repeated_points) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// Every output is checked before the run: a report in a missing folder used to fail after
+// the whole reconstruction, with the mesh already written.
+TEST_F(CliTest, reconstruct_checks_every_output_before_it_runs) {
+  const auto r = run_envcrust("reconstruct builtin:cylinder -o " + path("x.ply") + " --report " +
+                              path("missing/r.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("missing/r.json") + ": folder '" + path("missing") +
+                       "' does not exist\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+  const auto e = run_envcrust("reconstruct builtin:cylinder -o " + path("x.ply") + " --envelope-out " + path("e.off"));
+  EXPECT_EQ(e.exit_code, 1);
+  EXPECT_EQ(e.err, "envcrust: error: " + path("e.off") + ": unknown extension '.off' (expected .xyz, .ply)\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 // Normals in a point file may have any length (they are scaled to unit length), but not
 // zero: the error names the file and the point (counted from 1 in file order).
 TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {

@@ -86,5 +86,26 @@ TEST_F(AtomicWrite, reports_target_that_is_a_folder) {
   EXPECT_EQ(files(), std::vector<std::string>{"out.txt"});
 }
 
+TEST_F(AtomicWrite, output_paths_are_checked_before_anything_is_written) {
+  EXPECT_NO_THROW(check_output_path(path("m.PLY"), OutputKind::Mesh));
+  EXPECT_NO_THROW(check_output_path(path("p.xyz"), OutputKind::Points));
+  EXPECT_NO_THROW(check_output_path(path("r.json"), OutputKind::Text));
+  EXPECT_NO_THROW(check_output_path("relative.png", OutputKind::Image));  // the current folder
+  const auto mesh = path("m.xyz");
+  EXPECT_EQ(io_error_of([&] { check_output_path(mesh, OutputKind::Mesh); }),
+            mesh.string() + ": unknown extension '.xyz' (expected .ply, .off, .obj)");
+  const auto points = path("p.off");
+  EXPECT_EQ(io_error_of([&] { check_output_path(points, OutputKind::Points); }),
+            points.string() + ": unknown extension '.off' (expected .xyz, .ply)");
+  const auto image = path("i");
+  EXPECT_EQ(io_error_of([&] { check_output_path(image, OutputKind::Image); }),
+            image.string() + ": no extension (expected .png)");
+  const auto missing = path("no_such_folder") / "r.json";
+  EXPECT_EQ(io_error_of([&] { check_output_path(missing, OutputKind::Text); }),
+            missing.string() + ": folder '" + path("no_such_folder").string() + "' does not exist");
+  EXPECT_FALSE(std::filesystem::exists(path("no_such_folder")));
+}
+
 }  // namespace
 }  // namespace envcrust::io
+
