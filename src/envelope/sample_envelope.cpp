@@ -248,8 +248,12 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   }
   out.min_rho_for_gaps = out.input_coverage / kGapsPerRho;
   if (out.rho < out.min_rho_for_gaps) {
-    out.warnings.push_back("the input has gaps of " + format(out.input_coverage) + " (rho is " + format(out.rho) +
-                           "): the envelope may have holes; rho >= " + format(out.min_rho_for_gaps) +
+    // How many samples see such a gap tells a sparse region from a few stray points.
+    const auto wide = std::count_if(out.input_neighbour_distance.begin(), out.input_neighbour_distance.end(),
+                                    [&](double gap) { return gap > kGapsPerRho * out.rho; });
+    out.warnings.push_back("the input has gaps of up to " + format(out.input_coverage) + " at " + std::to_string(wide) +
+                           " of " + std::to_string(surface.points.size()) + " samples (rho is " + format(out.rho) +
+                           "): the envelope may have holes there; rho >= " + format(out.min_rho_for_gaps) +
                            " or input with gaps below " + format(kGapsPerRho * out.rho) + " would work");
   }
   return out;

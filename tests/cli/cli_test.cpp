@@ -598,6 +598,30 @@ TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// A few stray points make the widest gaps of the input; the warning about gaps counts the
+// samples that see one, which tells them from a sparse region, and the result stays right.
+TEST_F(CliTest, reconstruct_counts_the_samples_behind_a_gap_warning) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 4000 --seed 5 -q -o " + path("c.xyz")).exit_code, 0);
+  {
+    std::ofstream out(path("c.xyz"), std::ios::app);
+    for (int i = 0; i < 6; ++i) out << 0.3 * (i - 2.5) << " 0.1 " << (i % 2 ? 1.6 : -1.6) << "\n";  // beyond the rims
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("c.xyz") + " -r builtin:cylinder -o " + path("c.ply") + " --json");
+  std::string gaps;
+  for (const auto& w : j["warnings"])
+    if (w.get<std::string>().rfind("the input has gaps of up to ", 0) == 0) gaps = w.get<std::string>();
+  ASSERT_FALSE(gaps.empty()) << j["warnings"].dump();
+  const auto at = gaps.find(" at ");
+  const auto of = gaps.find(" of 4006 samples (rho is ");
+  ASSERT_NE(at, std::string::npos) << gaps;
+  ASSERT_NE(of, std::string::npos) << gaps;
+  const int wide = std::stoi(gaps.substr(at + 4, of - at - 4));
+  EXPECT_GE(wide, 1) << gaps;
+  EXPECT_LE(wide, 6) << gaps;  // the stray points, not the cylinder's samples
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+}
+
 // A scan that repeats its points (overlapping views written out together) reconstructs as
 // the points once: before the merge, every copy read as a zero spacing and the envelope came
 // out with holes ("the reconstruction is empty").
