@@ -120,8 +120,6 @@ bool has_short_reversing_loop(ReversingLoops& loops, const topology::MeshGraph& 
   return false;
 }
 
-}  // namespace
-
 // The vertices of the seams to cut: every seam, or (with a finite `max_twist_loop`) those
 // crossed by a reversing loop shorter than it, defects of the sheet; the others are twists of
 // the surface itself. Counts both.
@@ -146,6 +144,8 @@ SeamChoice choose_seams(const TriangleMesh& mesh, const topology::MeshGraph& g, 
   }
   return choice;
 }
+
+}  // namespace
 
 OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, double max_twist_loop, int max_rounds) {
   OrientableCutStats stats;
