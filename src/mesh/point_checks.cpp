@@ -63,9 +63,7 @@ int spread_dimension(const std::vector<Point3>& points, double tolerance) {
   const auto [c, from_line] = farthest([&](const Point3& p) { return std::sqrt(CGAL::squared_distance(line, p)); });
   if (from_line <= tolerance) return 1;
   const Kernel::Plane_3 plane(a, points[b], points[c]);
-  const auto [d, from_plane] =
-      farthest([&](const Point3& p) { return std::sqrt(CGAL::squared_distance(plane, p)); });
-  (void)d;
+  const double from_plane = farthest([&](const Point3& p) { return std::sqrt(CGAL::squared_distance(plane, p)); }).second;
   return from_plane <= tolerance ? 2 : 3;
 }
 

@@ -21,6 +21,14 @@ class CliTest : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
   [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  /// `envcrust reconstruct FILE -o x.ply` (both in the test folder) exits with 1 and the one
+  /// line "envcrust: error: FILE: problem", and writes no output.
+  void expect_reconstruct_refuses(const std::string& file, const std::string& problem) const {
+    const CommandResult r = run_envcrust("reconstruct " + path(file) + " -o " + path("x.ply"));
+    EXPECT_EQ(r.exit_code, 1) << file;
+    EXPECT_EQ(r.err, "envcrust: error: " + path(file) + ": " + problem + "\n");
+    EXPECT_FALSE(std::filesystem::exists(path("x.ply"))) << file;
+  }
   std::filesystem::path dir_;
 };
 

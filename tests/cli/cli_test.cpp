@@ -543,10 +543,7 @@ TEST_F(CliTest, reconstruct_too_few_points_names_the_file) {
     std::ofstream out(path("few.xyz"));
     for (int i = 0; i < 20; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << "\n";
   }
-  const auto r = run_envcrust("reconstruct " + path("few.xyz") + " -o " + path("x.ply"));
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "envcrust: error: " + path("few.xyz") + ": boundary detection needs at least neighbors + 1 = 33 points (got 20)\n");
-  EXPECT_FALSE(fs::exists(path("x.ply")));
+  expect_reconstruct_refuses("few.xyz", "boundary detection needs at least neighbors + 1 = 33 points (got 20)");
 }
 
 // Points on a line, or one point repeated, are no surface: refused with the file's name
@@ -556,18 +553,12 @@ TEST_F(CliTest, reconstruct_refuses_points_on_a_line_and_repeated_points) {
     std::ofstream out(path("line.xyz"));
     for (int i = 0; i < 100; ++i) out << i / 7.0 << " " << 2 * i / 7.0 << " " << -i / 7.0 << "\n";  // 6 digits
   }
-  const auto line = run_envcrust("reconstruct " + path("line.xyz") + " -o " + path("x.ply"));
-  EXPECT_EQ(line.exit_code, 1);
-  EXPECT_EQ(line.err, "envcrust: error: " + path("line.xyz") + ": all 100 points lie on a line: no surface to reconstruct\n");
+  expect_reconstruct_refuses("line.xyz", "all 100 points lie on a line: no surface to reconstruct");
   {
     std::ofstream out(path("same.xyz"));
     for (int i = 0; i < 50; ++i) out << (i % 2 ? "1 2 3\n" : "1 2 4\n");
   }
-  const auto same = run_envcrust("reconstruct " + path("same.xyz") + " -o " + path("x.ply"));
-  EXPECT_EQ(same.exit_code, 1);
-  EXPECT_EQ(same.err,
-            "envcrust: error: " + path("same.xyz") + ": need at least 5 distinct points, got 2 (48 duplicates merged)\n");
-  EXPECT_FALSE(fs::exists(path("x.ply")));
+  expect_reconstruct_refuses("same.xyz", "need at least 5 distinct points, got 2 (48 duplicates merged)");
 }
 
 // Every output is checked before the run: a report in a missing folder used to fail after
@@ -592,10 +583,7 @@ TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {
     std::ofstream out(path("n.xyz"));
     for (int i = 0; i < 40; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << " 0 0 " << (i == 6 ? 0 : 3) << "\n";
   }
-  const auto r = run_envcrust("reconstruct " + path("n.xyz") + " -o " + path("x.ply"));
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "envcrust: error: " + path("n.xyz") + ": point 7 has a zero normal\n");
-  EXPECT_FALSE(fs::exists(path("x.ply")));
+  expect_reconstruct_refuses("n.xyz", "point 7 has a zero normal");
 }
 
 // A few stray points make the widest gaps of the input; the warning about gaps counts the
@@ -710,10 +698,7 @@ TEST_F(CliTest, reconstruct_refuses_a_mesh_of_zero_area_naming_it) {
     std::ofstream f(path("flat.off"));
     f << "OFF\n3 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n3 0 2 1\n";  // collinear, and again reversed
   }
-  const auto r = run_envcrust("reconstruct " + path("flat.off") + " -o " + path("x.ply"));
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "envcrust: error: " + path("flat.off") + ": the mesh has no face of positive area\n");
-  EXPECT_FALSE(fs::exists(path("x.ply")));
+  expect_reconstruct_refuses("flat.off", "the mesh has no face of positive area");
 }
 
 TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {
