@@ -4,6 +4,7 @@
 // Peak MB: the largest resident size during the reconstruction (VmHWM, reset before it).
 #include "peak_memory.h"
 
+#include "envcrust/heap.h"
 #include "envcrust/pipeline.h"
 #include "envcrust/surfaces.h"
 
@@ -35,6 +36,7 @@ std::vector<std::string> split(const char* text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  io::reuse_freed_memory();  // as the CLI's reconstruct does
   std::vector<std::string> sizes = {"10000", "100000", "1000000"};
   std::vector<std::string> names = {"trefoil-ribbon", "moebius", "cylinder"};
   for (int i = 1; i + 1 < argc; ++i) {

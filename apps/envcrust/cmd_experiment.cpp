@@ -9,6 +9,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "envcrust/errors.h"
+#include "envcrust/heap.h"
 #include "envcrust/experiments.h"
 #include "envcrust/io.h"
 
@@ -86,6 +87,7 @@ std::optional<render::Font> load_font(const std::string& path, std::vector<std::
 }
 
 void run_experiments(ExperimentCommand& cmd) {
+  io::reuse_freed_memory();
   if (cmd.list) {
     for (const auto& e : experiments::experiment_list())
       std::cout << e.name << (e.paper_figures.empty() ? "" : " (" + e.paper_figures + ")") << ": " << e.description

@@ -6,6 +6,7 @@
 #include "surface_input.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/heap.h"
 #include "envcrust/io.h"
 #include "envcrust/mesh.h"
 #include "envcrust/pipeline.h"
@@ -135,6 +136,7 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
     j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
                   {"bottleneck", e.reach.bottleneck}};
     j["rho_from"] = e.is_rho_gap_bound ? "gaps" : e.is_rho_noise_bound ? "noise" : "reach";
+    j["input_too_sparse"] = e.is_input_too_sparse;
   }
   return j;
 }
@@ -246,6 +248,7 @@ void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
 }
 
 void run_reconstruct(ReconstructCommand& cmd) {
+  io::reuse_freed_memory();
   check_outputs(cmd, io::OutputKind::Mesh);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
@@ -265,6 +268,10 @@ void run_reconstruct(ReconstructCommand& cmd) {
       reason << ": rho " << e.rho << " is too small for the input's gaps (up to " << e.input_coverage
              << "); use --rho " << e.min_rho_for_gaps << " or more, or input with gaps below "
              << e.input_coverage * e.rho / e.min_rho_for_gaps;
+    else if (cmd.options.method == pipeline::Method::Envelope && e.is_input_too_sparse)
+      reason << ": the input is too sparse or noisy for its size (rho " << e.rho
+             << " is " << std::setprecision(3) << 100.0 * e.rho / mesh::bbox_diagonal(loaded.samples.points)
+             << "% of its diagonal); sample it denser";
     else if (const double diagonal = mesh::bbox_diagonal(loaded.samples.points);
              cmd.options.method == pipeline::Method::Envelope && e.rho > 0.25 * diagonal)
       reason << ": rho " << e.rho << " is more than a quarter of the input's size (diagonal " << diagonal
@@ -317,7 +324,11 @@ void run_reconstruct(ReconstructCommand& cmd) {
                    std::isinf(cmd.options.sheet.orientable_max_twist_loop_rel_rho)
                        ? nlohmann::json(nullptr)
                        : nlohmann::json(cmd.options.sheet.orientable_max_twist_loop_rel_rho)},
-                  {"cut_handles_rel_rho", cmd.options.sheet.cut_handles_rel_rho}};
+                  {"cut_handles_rel_rho", cmd.options.sheet.cut_handles_rel_rho},
+                  {"seconds",
+                   {{"voronoi", s.seconds.voronoi}, {"cleaning", s.seconds.cleaning},
+                    {"projection", s.seconds.projection}, {"manifold_check", s.seconds.manifold_check},
+                    {"orientable_cut", s.seconds.orientable_cut}, {"handle_cut", s.seconds.handle_cut}}}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;
@@ -378,6 +389,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
 
 
 void run_envelope(ReconstructCommand& cmd) {
+  io::reuse_freed_memory();
   check_outputs(cmd, io::OutputKind::Points);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;

@@ -207,6 +207,9 @@ struct EnvelopeSamples {
   double noise = 0.0;              ///< estimate_noise of the samples
   bool is_rho_noise_bound = false; ///< automatic rho was raised to min_rho_rel_noise * noise
   bool is_rho_gap_bound = false;   ///< automatic rho was raised to bridge the input's gaps (gap_quantile)
+  /// Automatic rho, raised for gaps or noise, came out above max_reach_rel_diag of the
+  /// diagonal: the envelope cannot resolve the input's shape (a warning says so).
+  bool is_input_too_sparse = false;
   std::size_t candidates = 0;      ///< before thinning
   std::size_t dropped_too_close = 0;  ///< candidates nearer than the clearance to M
   double input_coverage = 0.0;     ///< largest gap of the input samples seen by the sheets

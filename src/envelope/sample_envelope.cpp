@@ -122,11 +122,12 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                                ", more than the estimated reach " + format(capped) +
                                ": the envelope may fold onto itself; denoise or sample denser");
     }
+    double bridging = 0.0;  // the rho that bridges the gaps of gap_quantile of the samples
     if (options.gap_quantile > 0 && !out.input_neighbour_distance.empty()) {
       std::vector<double> rk = out.input_neighbour_distance;
       const auto at = std::min(rk.size() - 1, static_cast<std::size_t>(options.gap_quantile * static_cast<double>(rk.size())));
       std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
-      const double bridging = rk[at] / kGapsPerRho;
+      bridging = rk[at] / kGapsPerRho;
       if (bridging > out.rho) {
         out.warnings.push_back("rho raised from " + format(out.rho) +
                                (out.is_rho_noise_bound ? " (" + format(options.min_rho_rel_noise) + " times the noise)"
@@ -139,6 +140,24 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
         out.is_rho_gap_bound = true;
         out.is_rho_noise_bound = false;
       }
+    }
+    // Raised past the cap the reach itself respects, rho blurs shapes of the input's own
+    // size: the envelope of 40 points on a square is a pillow whose medial sheet closes. A
+    // sparse input also reads as noisy (its plane fits span curved patches), so the count of
+    // samples that would do is given whenever the gaps alone need too large a rho.
+    const double resolvable = options.max_reach_rel_diag * diag;
+    if (out.rho > resolvable && (out.is_rho_gap_bound || out.is_rho_noise_bound)) {
+      out.is_input_too_sparse = true;
+      const bool is_sparse = bridging > resolvable;
+      const double denser = static_cast<double>(surface.points.size()) * (bridging / resolvable) * (bridging / resolvable);
+      out.warnings.push_back("the input is too " + std::string(!is_sparse ? "noisy" : out.is_rho_gap_bound ? "sparse" : "sparse (or noisy)") +
+                             " for its size: rho " + format(out.rho) + " is " + format(100.0 * out.rho / diag) +
+                             "% of its diagonal (the envelope resolves shapes down to about 2 rho; at most " +
+                             format(100.0 * options.max_reach_rel_diag) + "% is trusted): the result may be "
+                             "rounded, closed or empty" +
+                             (is_sparse ? "; about " + format(std::ceil(denser)) + " samples, evenly spread, would "
+                                          "bridge the gaps with rho at " + format(100.0 * options.max_reach_rel_diag) + "%"
+                                        : std::string()));
     }
   }
   out.spacing = options.spacing_rel_rho * out.rho;

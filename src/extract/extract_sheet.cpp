@@ -13,11 +13,26 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <iomanip>
 #include <sstream>
 
 namespace envcrust::extract {
 namespace {
+
+// Seconds since construction or the last lap.
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
 
 void validate(const SheetOptions& o) {
   auto fail = [](const std::string& field, double value) {
@@ -96,12 +111,15 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                           const envelope::SurfaceSamples& surface, const SheetOptions& options) {
   validate(options);
   SheetResult result;
+  auto& seconds = result.stats.seconds;
+  Stopwatch clock;
   const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg);
   result.stats.delaunay_edges = raw.delaunay_edges;
   result.stats.crossing_edges = raw.crossing_edges;
   result.stats.polygons = raw.polygons.size();
 
   TaggedMesh sheet = triangulate_sheet(raw);
+  seconds.voronoi = clock.lap();
   // One kd-tree of the surface samples for every step below.
   const NearestIndex samples(surface.points);
   // Distances that scale with rho use the local rho of the nearest sample (adaptive rho),
@@ -128,6 +146,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.vertices_split += split_pinched_vertices(sheet);
   }
   compact_vertices(sheet);
+  seconds.cleaning = clock.lap();
   if (options.use_projection) {
     const bool is_noisy = envelope.noise > options.noisy_rel_rho * envelope.rho;
     const auto moved = project_onto_samples(
@@ -151,6 +170,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.vertices_projected = moved.moved + snapped.moved;
     result.stats.projections_refused = moved.refused + snapped.refused;
   }
+  seconds.projection = clock.lap();
   // Every step above can leave a defect that the next ones do not see (moves put vertices on
   // one point, a fan over a loop through a pinched vertex), so the result is checked as the
   // analyzer reads it, and repaired.
@@ -163,6 +183,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (repair.faces_dropped > 0)
     result.warnings.push_back(std::to_string(repair.faces_dropped) +
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
+  seconds.manifold_check = clock.lap();
   // After a cut: the removed bands or balls leave crumbs between them (dropped) and
   // pinholes where a band or ball barely touched the sheet (fanned, as every hole below the
   // envelope's resolution is); with fill_cut_holes every hole away from the boundary curves
@@ -218,6 +239,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                                 (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : "") + closed);
     }
   }
+  seconds.orientable_cut = clock.lap();
   if (options.cut_handles_rel_rho > 0) {
     const HandleCutStats cut = cut_local_handles(sheet, options.cut_handles_rel_rho * envelope.rho);
     result.stats.handle_balls = cut.balls;
@@ -230,6 +252,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       result.warnings.push_back(w.str());
     }
   }
+  seconds.handle_cut = clock.lap();
   result.mesh = std::move(sheet.mesh);
   // The Voronoi polygons come wound as their Delaunay edges happen to run.
   topology::orient_faces(result.mesh);

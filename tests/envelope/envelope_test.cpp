@@ -208,3 +208,30 @@ TEST(Envelope, automatic_rho_bridges_the_gaps_of_a_sparse_input) {
   const auto dense = envelope::sample_envelope(exact_samples("cylinder", 5000));
   EXPECT_FALSE(dense.is_rho_gap_bound);
 }
+
+// 60 samples of the cylinder need a rho of about a sixth of its diagonal to bridge their gaps
+// (their plane fits also read the curvature as noise): more than the 10% the envelope
+// resolves, which the warning says, with a sample count that would do. 1.3 times that count
+// is no longer too sparse; 300 samples never were.
+TEST(Envelope, an_input_too_sparse_for_its_size_is_reported_with_the_count_that_would_do) {
+  const auto sparse = envelope::sample_envelope(exact_samples("cylinder", 60));
+  ASSERT_TRUE(sparse.is_input_too_sparse);
+  const auto w = std::find_if(sparse.warnings.begin(), sparse.warnings.end(),
+                              [](const std::string& s) { return s.rfind("the input is too sparse", 0) == 0; });
+  ASSERT_NE(w, sparse.warnings.end()) << sparse.warnings.size() << ": " << sparse.warnings.back();
+  EXPECT_NE(w->find("% of its diagonal (the envelope resolves shapes down to about 2 rho; at most 10% is trusted): "
+                    "the result may be rounded, closed or empty; about "),
+            std::string::npos)
+      << *w;
+  const auto at = w->find("; about ") + 8;
+  const double count = std::stod(w->substr(at));
+  EXPECT_NE(w->find(" samples, evenly spread, would bridge the gaps with rho at 10%", at), std::string::npos) << *w;
+  EXPECT_GT(count, 60);
+  EXPECT_LT(count, 600);
+  EXPECT_FALSE(envelope::sample_envelope(exact_samples("cylinder", static_cast<std::size_t>(1.3 * count))).is_input_too_sparse);
+  EXPECT_FALSE(envelope::sample_envelope(exact_samples("cylinder", 300)).is_input_too_sparse);
+  // A rho given explicitly is the user's choice: no such warning.
+  envelope::EnvelopeOptions given;
+  given.rho = 0.6;
+  EXPECT_FALSE(envelope::sample_envelope(exact_samples("cylinder", 60), given).is_input_too_sparse);
+}
