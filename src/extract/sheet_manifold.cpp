@@ -6,7 +6,7 @@
 #include "envcrust/mesh_graph.h"
 
 #include <algorithm>
-#include <map>
+#include <limits>
 
 namespace envcrust::extract {
 namespace {
@@ -61,19 +61,24 @@ Defects find_defects(const TriangleMesh& m, std::vector<char>* faces = nullptr) 
     for (auto count : topology::count_vertex_fans(g)) out.vertices += count > 1 ? 1 : 0;
     return out;
   }
+  // At a pinched vertex (several fans) every face outside its largest fan goes. Fans are
+  // identified by their root corner (corner_fans), which lies at their vertex.
   const auto fan = topology::corner_fans(g);
-  std::vector<std::map<std::uint32_t, std::vector<std::uint32_t>>> fans(g.num_vertices);
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f)
-    for (std::uint32_t k = 0; k < 3; ++k) fans[g.faces[f][k]][fan[3 * f + k]].push_back(f);
-  for (const auto& of_vertex : fans) {
-    if (of_vertex.size() < 2) continue;
-    ++out.vertices;
-    const std::vector<std::uint32_t>* largest = nullptr;
-    for (const auto& [root, list] : of_vertex)
-      if (largest == nullptr || list.size() > largest->size()) largest = &list;
-    for (const auto& [root, list] : of_vertex)
-      if (&list != largest)
-        for (auto f : list) (*faces)[f] = 1;
+  std::vector<std::uint32_t> fan_faces(fan.size(), 0);
+  for (const std::uint32_t root : fan) ++fan_faces[root];
+  constexpr auto kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> largest(g.num_vertices, kNone);
+  std::vector<std::uint32_t> fan_count(g.num_vertices, 0);
+  for (std::uint32_t c = 0; c < fan.size(); ++c) {
+    if (fan[c] != c) continue;
+    const Index v = g.faces[c / 3][c % 3];
+    ++fan_count[v];
+    if (largest[v] == kNone || fan_faces[c] > fan_faces[largest[v]]) largest[v] = c;
+  }
+  for (const auto count : fan_count) out.vertices += count > 1 ? 1 : 0;
+  for (std::uint32_t c = 0; c < fan.size(); ++c) {
+    const Index v = g.faces[c / 3][c % 3];
+    if (fan_count[v] > 1 && fan[c] != largest[v]) (*faces)[c / 3] = 1;
   }
   return out;
 }

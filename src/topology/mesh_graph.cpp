@@ -103,16 +103,12 @@ std::vector<std::uint32_t> corner_fans(const MeshGraph& g) {
 }
 
 std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& g) {
+  // All corners of a fan share its vertex, and each fan has one root corner: a vertex has as
+  // many fans as it has root corners.
   const auto fan = corner_fans(g);
-  std::vector<std::vector<std::uint32_t>> roots(g.num_vertices);
-  for (std::uint32_t f = 0; f < g.faces.size(); ++f)
-    for (std::uint32_t k = 0; k < 3; ++k) roots[g.faces[f][k]].push_back(fan[3 * f + k]);
   std::vector<std::uint32_t> fans(g.num_vertices, 0);
-  for (std::size_t v = 0; v < g.num_vertices; ++v) {
-    auto& r = roots[v];
-    std::sort(r.begin(), r.end());
-    fans[v] = static_cast<std::uint32_t>(std::unique(r.begin(), r.end()) - r.begin());
-  }
+  for (std::uint32_t c = 0; c < fan.size(); ++c)
+    if (fan[c] == c) ++fans[g.faces[c / 3][c % 3]];
   return fans;
 }
 
