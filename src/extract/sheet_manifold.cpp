@@ -44,22 +44,17 @@ struct Defects {
   [[nodiscard]] bool empty() const { return edges == 0 && vertices == 0; }
 };
 
-// The defects of the mesh, and (when `faces` is given) the faces at them: every face of a
-// non-manifold edge, and at a pinched vertex every face outside its largest fan.
-Defects find_defects(const TriangleMesh& m, std::vector<char>* faces = nullptr) {
+// The defects of the mesh, and in `faces` the faces at them: every face of a non-manifold
+// edge, and at a pinched vertex every face outside its largest fan.
+Defects find_defects(const TriangleMesh& m, std::vector<char>& faces) {
   Defects out;
-  if (faces != nullptr) faces->assign(m.triangles.size(), 0);
+  faces.assign(m.triangles.size(), 0);
   if (m.triangles.empty()) return out;
   const auto g = topology::build_mesh_graph(m.triangles, m.vertices.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
     if (g.face_count_of_edge(e) < 3) continue;
     ++out.edges;
-    if (faces != nullptr)
-      for (std::uint32_t i = g.edge_face_begin[e]; i < g.edge_face_begin[e + 1]; ++i) (*faces)[g.edge_faces[i]] = 1;
-  }
-  if (faces == nullptr) {
-    for (auto count : topology::count_vertex_fans(g)) out.vertices += count > 1 ? 1 : 0;
-    return out;
+    for (std::uint32_t i = g.edge_face_begin[e]; i < g.edge_face_begin[e + 1]; ++i) faces[g.edge_faces[i]] = 1;
   }
   // At a pinched vertex (several fans) every face outside its largest fan goes. Fans are
   // identified by their root corner (corner_fans), which lies at their vertex.
@@ -78,7 +73,7 @@ Defects find_defects(const TriangleMesh& m, std::vector<char>* faces = nullptr) 
   for (const auto count : fan_count) out.vertices += count > 1 ? 1 : 0;
   for (std::uint32_t c = 0; c < fan.size(); ++c) {
     const Index v = g.faces[c / 3][c % 3];
-    if (fan_count[v] > 1 && fan[c] != largest[v]) (*faces)[c / 3] = 1;
+    if (fan_count[v] > 1 && fan[c] != largest[v]) faces[c / 3] = 1;
   }
   return out;
 }
@@ -93,7 +88,9 @@ ManifoldRepairStats make_manifold(TaggedMesh& t, int max_rounds) {
     stats.degenerate_faces_removed += degenerate;
   };
   weld();
-  Defects defects = find_defects(t.mesh);
+  // Each check also marks the faces at the defects it finds, for the removal below.
+  std::vector<char> remove;
+  Defects defects = find_defects(t.mesh, remove);
   if (defects.empty()) return stats;  // vertex order kept
   stats.non_manifold_edges_found = defects.edges;
   stats.non_manifold_vertices_found = defects.vertices;
@@ -102,14 +99,14 @@ ManifoldRepairStats make_manifold(TaggedMesh& t, int max_rounds) {
     stats.non_manifold_faces_removed += resolve_non_manifold_edges(t);
     stats.vertices_split += split_pinched_vertices(t);
     weld();
-    defects = find_defects(t.mesh);
+    defects = find_defects(t.mesh, remove);
   }
   // What the rounds could not repair goes: the faces at the remaining defects, until none is
   // left (each pass removes at least one face, so this ends).
-  std::vector<char> remove;
-  while (!find_defects(t.mesh, &remove).empty()) {
+  while (!defects.empty()) {
     stats.faces_dropped += remove_faces(t, remove);
     weld();
+    defects = find_defects(t.mesh, remove);
   }
   compact_vertices(t);
   return stats;

@@ -2,23 +2,28 @@
 // repeated faces.
 #include "envcrust/mesh.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
-#include <numeric>
+#include <tuple>
 
 namespace envcrust::mesh {
 
 TriangleMesh weld_identical_vertices(const TriangleMesh& mesh) {
   const std::size_t n = mesh.vertices.size();
+  // Sorted by coordinates, then index: positions are copied next to their index so the
+  // parallel sort compares contiguous records.
+  struct Keyed {
+    double x, y, z;
+    Index index;
+    bool operator<(const Keyed& o) const { return std::tie(x, y, z, index) < std::tie(o.x, o.y, o.z, o.index); }
+  };
+  std::vector<Keyed> keyed(n);
+  for (std::size_t v = 0; v < n; ++v)
+    keyed[v] = {mesh.vertices[v].x(), mesh.vertices[v].y(), mesh.vertices[v].z(), static_cast<Index>(v)};
+  tbb::parallel_sort(keyed.begin(), keyed.end());
   std::vector<Index> order(n);
-  std::iota(order.begin(), order.end(), Index{0});
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-    const auto& p = mesh.vertices[a];
-    const auto& q = mesh.vertices[b];
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    return a < b;
-  });
+  for (std::size_t i = 0; i < n; ++i) order[i] = keyed[i].index;
   // Representative of each vertex: the smallest index with the same coordinates.
   std::vector<Index> representative(n);
   for (std::size_t i = 0; i < n;) {
@@ -55,7 +60,7 @@ std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh) {
     std::sort(key.begin(), key.end());
     keys.emplace_back(key, f);
   }
-  std::sort(keys.begin(), keys.end());
+  tbb::parallel_sort(keys.begin(), keys.end());
   std::vector<char> drop(mesh.triangles.size(), 0);
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const auto& [key, f] = keys[k];
