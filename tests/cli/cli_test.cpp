@@ -317,6 +317,28 @@ TEST_F(CliTest, reconstruct_sparse_input_gets_a_rho_that_bridges_its_gaps) {
   EXPECT_EQ(nlohmann::json::parse(off.out)["envelope"]["rho_from"], "reach");
 }
 
+// issue 5, too few points: 40 points on the square need a rho of 15% of its diagonal to bridge
+// their gaps, and come out closed; the report says the input is too sparse for its size and
+// names a count that would do. 80 points of the cylinder give nothing, and the error says why.
+TEST_F(CliTest, reconstruct_of_an_input_too_sparse_for_its_size_says_so) {
+  ASSERT_EQ(run_envcrust("sample square -n 40 --seed 1 -o " + path("square.xyz")).exit_code, 0);
+  const auto j = run_envcrust_json("reconstruct " + path("square.xyz") + " -o " + path("s.ply") + " --json");
+  EXPECT_TRUE(j["envelope"]["input_too_sparse"].get<bool>());
+  bool warned = false;
+  for (const auto& w : j["warnings"])
+    warned = warned || w.get<std::string>().rfind("the input is too sparse for its size: rho 0.4", 0) == 0;
+  EXPECT_TRUE(warned) << j["warnings"];
+  ASSERT_EQ(run_envcrust("sample cylinder -n 80 --seed 1 -o " + path("cylinder.xyz")).exit_code, 0);
+  const auto r = run_envcrust("reconstruct " + path("cylinder.xyz") + " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("envcrust: error: " + path("cylinder.xyz") +
+                       ": the reconstruction is empty: the input is too sparse or noisy for its size (rho "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("% of its diagonal); sample it denser\n"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 // issue 5: rho too small for the sampling leaves holes everywhere; the error says which rho
 // or which input spacing would work, and the rho it names does work.
 TEST_F(CliTest, reconstruct_with_rho_below_the_gaps_says_which_rho_works) {
