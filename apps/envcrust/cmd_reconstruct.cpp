@@ -1,5 +1,6 @@
 // `envcrust reconstruct` (the main job) and `envcrust envelope` (the envelope samples alone).
 #include "analysis_output.h"
+#include "boundary_check_output.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "inputs.h"
@@ -342,7 +343,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     j["envelope_crust"] = {{"faces", crust.faces}, {"euler_characteristic", crust.euler_characteristic},
                            {"is_closed", crust.is_closed()}, {"is_manifold", crust.is_manifold()}};
   }
-  j["warnings"] = result.warnings;
+  std::vector<std::string> warnings = result.warnings;
   std::optional<analysis::AnalysisReport> report;
   if (!cmd.no_analysis) {
     analysis::Reference reference;
@@ -355,7 +356,21 @@ void run_reconstruct(ReconstructCommand& cmd) {
     }
     report = analysis::analyze_mesh(result.mesh, reference);
     j["analysis"] = analysis_json(*report);
+    // The result's border against the curves the reconstruction was given or detected.
+    std::vector<Polyline> curves;
+    for (const auto& c : loaded.samples.boundary) curves.push_back(c.polyline());
+    const bool is_envelope = cmd.options.method == pipeline::Method::Envelope;
+    const double tolerance =
+        is_envelope ? 2.0 * result.envelope.rho : 0.01 * mesh::bbox_diagonal(loaded.samples.points);
+    std::ostringstream tolerance_text;
+    tolerance_text.precision(4);
+    tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << tolerance;
+    const auto check = analysis::check_boundary(report->topology, curves, tolerance);
+    j["boundary_check"] = boundary_check_json(check, curves, report->topology);
+    for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
+      warnings.push_back(std::move(w));
   }
+  j["warnings"] = warnings;
   const std::vector<std::string> hints = report ? scan_hints(loaded, cmd, *report) : std::vector<std::string>{};
   j["hints"] = hints;
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
@@ -382,7 +397,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     std::cout << "  remesh: " << s->faces_before << " -> " << s->faces_after << " faces (target edge "
               << s->target_edge_length << "), min angle " << s->min_angle_deg_before << " -> "
               << s->min_angle_deg_after << " deg, " << s->seconds << " s\n";
-  for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
+  for (const auto& w : warnings) std::cout << "  warning: " << w << "\n";
   if (report) print_analysis(std::cout, cmd.output, *report);
   for (const auto& h : hints) std::cout << "  hint: " << h << "\n";
 }

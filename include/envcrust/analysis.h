@@ -66,6 +66,22 @@ struct AnalysisReport {
 AnalysisReport analyze_mesh(const TriangleMesh& mesh, const Reference& reference = {},
                             const AnalyzeOptions& options = {});
 
+/// Boundary loops of a mesh against the boundary curves it should have (those the
+/// reconstruction was given or detected): each curve's nearest loop (least Hausdorff
+/// distance), the curves no loop follows within the tolerance (closed, or torn apart), and
+/// the loops that follow no curve within it (holes the curves do not have).
+struct BoundaryCheck {
+  double tolerance = 0.0;
+  std::vector<BoundaryMatch> matches;       ///< one per curve, in order
+  std::vector<std::size_t> missing_curves;  ///< curves whose nearest loop is farther than tolerance
+  std::vector<std::size_t> extra_loops;     ///< loops that are no curve's match within tolerance
+  [[nodiscard]] bool is_consistent() const { return missing_curves.empty() && extra_loops.empty(); }
+};
+
+/// Check the boundary loops of `topology` against `curves` (tolerance > 0, in mesh units).
+BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::vector<Polyline>& curves,
+                             double tolerance);
+
 /// Knot analysis of a lone closed curve (the paper's Figure 10 needs only this).
 knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& options = {});
 

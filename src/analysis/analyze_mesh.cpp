@@ -64,10 +64,10 @@ void analyze_loops(AnalysisReport& report, const AnalyzeOptions& options) {
   }
 }
 
-void match_boundaries(AnalysisReport& report, const std::vector<Polyline>& reference) {
-  const auto& topo = report.topology;
+std::vector<BoundaryMatch> match_boundaries(const topology::MeshTopology& topo, const std::vector<Polyline>& reference) {
   std::vector<Polyline> curves;
   for (const auto& loop : topo.boundary_loops) curves.push_back(loop.polyline(topo.points));
+  std::vector<BoundaryMatch> matches;
   for (std::size_t r = 0; r < reference.size(); ++r) {
     BoundaryMatch match;
     match.reference_loop = r;
@@ -79,8 +79,9 @@ void match_boundaries(AnalysisReport& report, const std::vector<Polyline>& refer
         match.mesh_loop = m;
       }
     }
-    report.boundary_matches.push_back(match);
+    matches.push_back(match);
   }
+  return matches;
 }
 
 }  // namespace
@@ -104,12 +105,28 @@ AnalysisReport analyze_mesh(const TriangleMesh& mesh, const Reference& reference
   } else if (!reference.points.empty()) {
     report.distance = distance::compare_to_points(mesh, reference.points, options.distance);
   }
-  if (!reference.boundary.empty()) match_boundaries(report, reference.boundary);
+  if (!reference.boundary.empty()) report.boundary_matches = match_boundaries(report.topology, reference.boundary);
   return report;
 }
 
 knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& options) {
   return knots::identify_knot(curve, options.knot);
+}
+
+BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::vector<Polyline>& curves,
+                             double tolerance) {
+  if (!(tolerance > 0)) throw InvalidInput("check_boundary: tolerance must be > 0");
+  BoundaryCheck check;
+  check.tolerance = tolerance;
+  check.matches = match_boundaries(topology, curves);
+  std::vector<char> explained(topology.boundary_loops.size(), 0);
+  for (const auto& m : check.matches) {
+    if (m.mesh_loop && m.hausdorff <= tolerance) explained[*m.mesh_loop] = 1;
+    else check.missing_curves.push_back(m.reference_loop);
+  }
+  for (std::size_t l = 0; l < explained.size(); ++l)
+    if (!explained[l]) check.extra_loops.push_back(l);
+  return check;
 }
 
 }  // namespace envcrust::analysis

@@ -1,12 +1,14 @@
 // The analyzer on the exact tessellation of every built-in surface must report the surface's
 // known topology: chi, boundary loops, orientability, boundary knot types and linking.
 #include "envcrust/analysis.h"
+#include "envcrust/errors.h"
 #include "envcrust/surfaces.h"
 #include "fixtures/shapes.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace envcrust;
 
@@ -86,4 +88,37 @@ TEST(Analysis, non_manifold_mesh_is_reported_in_warnings) {
   const auto report = analysis::analyze_mesh(m);
   ASSERT_FALSE(report.warnings.empty());
   EXPECT_EQ(report.warnings[0], "1 non-manifold edges");
+}
+
+// The border of a mesh against the boundary curves it should have: the open cylinder's two
+// rims follow the true circles; given one circle only, the other rim is a hole the curves do
+// not have; capped, neither circle has a rim.
+TEST(BoundaryCheck, names_the_curves_without_a_loop_and_the_loops_without_a_curve) {
+  const auto surface = surfaces::make_builtin("cylinder");
+  std::vector<Polyline> circles;
+  for (const auto& c : surfaces::boundary_curves(*surface, 0.01)) circles.push_back(c.polyline());
+  ASSERT_EQ(circles.size(), 2u);
+  const auto open = analysis::analyze_mesh(fixtures::open_cylinder(32, 4)).topology;
+  const double sagitta = 1 - std::cos(3.141592653589793 / 32);
+
+  const auto both = analysis::check_boundary(open, circles, 2 * sagitta);
+  EXPECT_TRUE(both.is_consistent());
+  ASSERT_EQ(both.matches.size(), 2u);
+  EXPECT_NE(*both.matches[0].mesh_loop, *both.matches[1].mesh_loop);
+  // Below the facets' own sagitta no rim follows its circle.
+  const auto strict = analysis::check_boundary(open, circles, 0.5 * sagitta);
+  EXPECT_EQ(strict.missing_curves, (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(strict.extra_loops.size(), 2u);
+
+  const auto one = analysis::check_boundary(open, {circles[0]}, 2 * sagitta);
+  EXPECT_TRUE(one.missing_curves.empty());
+  ASSERT_EQ(one.extra_loops.size(), 1u);
+  EXPECT_NE(one.extra_loops[0], *one.matches[0].mesh_loop);
+
+  const auto capped = analysis::check_boundary(analysis::analyze_mesh(fixtures::capped_cylinder()).topology, circles, 0.1);
+  EXPECT_EQ(capped.missing_curves, (std::vector<std::size_t>{0, 1}));
+  EXPECT_TRUE(capped.extra_loops.empty());
+  EXPECT_FALSE(capped.matches[0].mesh_loop.has_value());
+
+  EXPECT_THROW(analysis::check_boundary(open, circles, 0.0), InvalidInput);
 }

@@ -224,6 +224,20 @@ TEST_F(CliTest, direct_power_crust_closes_the_open_cylinder) {
   // The caps it adds lie far from the open cylinder.
   EXPECT_GT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>() +
                 a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.1);
+  // The boundary check names both rims it closed.
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["boundary_check"]["missing_curves"], nlohmann::json::array({0, 1}));
+  EXPECT_EQ(j["boundary_check"]["is_consistent"], false);
+  const std::string closed =
+      "input boundary curve 0 (length 6.283) has no border loop of the result within 1% of the diagonal = 0.0346";
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().rfind(closed, 0) == 0;
+  EXPECT_TRUE(warned) << j["warnings"];
+  // The envelope's rims follow both circles within 2 rho, and no other loop appears.
+  const auto e = run_envcrust_json("reconstruct builtin:cylinder -n 2000 -o " + path("e.ply") + " --json");
+  EXPECT_EQ(e["boundary_check"]["is_consistent"], true);
+  EXPECT_EQ(e["boundary_check"]["curves"], 2);
+  EXPECT_LT(e["boundary_check"]["matches"][0]["hausdorff"].get<double>(), 0.01);
 }
 
 TEST_F(CliTest, envelope_writes_samples_with_offset_directions) {
