@@ -5,11 +5,13 @@
 #include "envcrust/io.h"
 #include "envcrust/mesh.h"
 #include "envcrust/surfaces.h"
+#include "envcrust/topology.h"
 
 namespace envcrust::cli {
 namespace {
 
 constexpr std::string_view kBuiltinPrefix = "builtin:";
+constexpr std::size_t kMaxReferenceLoops = 64;
 
 std::unique_ptr<surfaces::Surface> builtin_of(const std::string& spec) {
   return surfaces::make_builtin(spec.substr(kBuiltinPrefix.size()));
@@ -47,6 +49,14 @@ analysis::Reference load_reference(const std::string& spec) {
     }
   } else {
     reference.points = io::read_points(spec).points;
+  }
+  // A reference mesh's border loops are the true boundary the result is matched against
+  // (a scan's own mesh: the bunny's 5 holes). Beyond kMaxReferenceLoops, a ragged mesh's
+  // crumbs, none is matched.
+  if (reference.mesh) {
+    const auto loops = topology::boundary_loops(*reference.mesh);
+    if (loops.size() <= kMaxReferenceLoops)
+      for (const auto& loop : loops) reference.boundary.push_back(loop.polyline(reference.mesh->vertices));
   }
   return reference;
 }

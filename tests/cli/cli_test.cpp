@@ -117,6 +117,20 @@ TEST_F(CliTest, analyze_against_a_builtin_reference_measures_distances_and_bound
   for (const auto& m : j["boundary_matches"]) EXPECT_LT(m["hausdorff_rel_diag"].get<double>(), 1e-3);
 }
 
+// A reference mesh's border loops are the true boundary: the coarse cylinder's two rims
+// match the exact tessellation's within the facets' sagitta; a closed reference has none.
+TEST_F(CliTest, analyze_against_a_mesh_reference_matches_its_border_loops) {
+  ASSERT_EQ(run_envcrust("sample cylinder --mesh -q -o " + path("c.off")).exit_code, 0);
+  ASSERT_EQ(run_envcrust("reconstruct builtin:cylinder -n 2000 -q -o " + path("r.ply")).exit_code, 0);
+  const auto j = run_envcrust_json("analyze " + path("r.ply") + " --reference " + path("c.off") + " --json");
+  ASSERT_EQ(j["boundary_matches"].size(), 2u);
+  EXPECT_NE(j["boundary_matches"][0]["mesh_loop"], j["boundary_matches"][1]["mesh_loop"]);
+  for (const auto& m : j["boundary_matches"]) EXPECT_LT(m["hausdorff_rel_diag"].get<double>(), 0.005) << m;
+  ASSERT_EQ(run_envcrust("sample sphere --mesh -q -o " + path("s.off")).exit_code, 0);
+  const auto closed = run_envcrust_json("analyze " + path("r.ply") + " --reference " + path("s.off") + " --json");
+  EXPECT_FALSE(closed.contains("boundary_matches"));
+}
+
 TEST_F(CliTest, analyze_a_point_reference) {
   ASSERT_EQ(run_envcrust("sample sphere --mesh -q -o " + path("s.obj")).exit_code, 0);
   ASSERT_EQ(run_envcrust("sample sphere -n 2000 -q -o " + path("s.xyz")).exit_code, 0);
