@@ -1,19 +1,11 @@
 // Warnings and JSON of analysis::check_boundary for the reconstruct command.
 #include "boundary_check_output.h"
 
-#include <cmath>
+#include "envcrust/mesh.h"
+
 #include <sstream>
 
 namespace envcrust::cli {
-namespace {
-
-double curve_length(const Polyline& c) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < c.size(); ++i) sum += std::sqrt(CGAL::squared_distance(c[i], c[(i + 1) % c.size()]));
-  return sum;
-}
-
-}  // namespace
 
 std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& check,
                                                  const std::vector<Polyline>& curves,
@@ -24,7 +16,7 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
     const auto& m = check.matches[c];
     std::ostringstream w;
     w.precision(4);
-    w << "input boundary curve " << c << " (length " << curve_length(curves[c]) << ") has no border loop of the result within "
+    w << "input boundary curve " << c << " (length " << mesh::closed_length(curves[c]) << ") has no border loop of the result within "
       << tolerance_text;
     if (m.mesh_loop) w << " (the nearest, loop " << *m.mesh_loop << ", is " << m.hausdorff << " away)";
     else w << " (the result has no border)";
@@ -46,7 +38,7 @@ nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const s
   nlohmann::json missing = nlohmann::json::array(), extra = nlohmann::json::array(), matches = nlohmann::json::array();
   for (const auto& m : check.matches)
     matches.push_back({{"curve", m.reference_loop},
-                       {"curve_length", curve_length(curves[m.reference_loop])},
+                       {"curve_length", mesh::closed_length(curves[m.reference_loop])},
                        {"loop", m.mesh_loop ? nlohmann::json(*m.mesh_loop) : nlohmann::json(nullptr)},
                        {"hausdorff", m.mesh_loop ? nlohmann::json(m.hausdorff) : nlohmann::json(nullptr)}});
   for (const std::size_t c : check.missing_curves) missing.push_back(c);

@@ -31,6 +31,9 @@ int spread_dimension(const std::vector<Point3>& points, double tolerance);
 /// Total area of the triangles.
 double total_area(const TriangleMesh& mesh);
 
+/// Length of a closed polyline (the segment from the last point back to the first included).
+double closed_length(const Polyline& curve);
+
 /// Fan-triangulate every polygon around its first vertex (polygons assumed convex-ish).
 TriangleMesh triangulate_polygons(const PolygonMesh& mesh);
 

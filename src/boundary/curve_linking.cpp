@@ -2,6 +2,8 @@
 // refined by binning all of the component's points along that path.
 #include "boundary_detail.h"
 
+#include "envcrust/mesh.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -59,14 +61,6 @@ std::size_t farthest(const std::vector<std::vector<std::pair<std::size_t, double
 void erase_edge(std::vector<std::vector<std::size_t>>& adj, std::size_t a, std::size_t b) {
   adj[a].erase(std::find(adj[a].begin(), adj[a].end(), b));
   adj[b].erase(std::find(adj[b].begin(), adj[b].end(), a));
-}
-
-double closed_length(const Polyline& p) {
-  double len = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    len += std::sqrt(CGAL::squared_distance(p[i], p[(i + 1) % p.size()]));
-  }
-  return len;
 }
 
 }  // namespace
@@ -282,7 +276,7 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
     Centreline line;
     if (const auto cycle = single_cycle(local, local_adj)) {
       line.points = *cycle;
-      line.length = closed_length(line.points);
+      line.length = mesh::closed_length(line.points);
       line.end_gap = std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
       line.open_length = line.length - line.end_gap;
     } else {
@@ -321,7 +315,7 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
   for (std::size_t b = 0; b < bins; ++b) {
     if (counts[b] > 0) out.points.push_back(CGAL::ORIGIN + sums[b] / static_cast<double>(counts[b]));
   }
-  out.length = closed_length(out.points);
+  out.length = mesh::closed_length(out.points);
   out.open_length = out.length - std::sqrt(CGAL::squared_distance(out.points.back(), out.points.front()));
   return out;
 }
@@ -335,7 +329,7 @@ Centreline order_component(const std::vector<Point3>& points,
   Centreline out;
   if (local.size() < 3) {
     out.points = local;
-    out.length = closed_length(local);
+    out.length = mesh::closed_length(local);
     out.open_length = local.empty() ? 0.0 : out.length - std::sqrt(CGAL::squared_distance(
                                                              local.back(), local.front()));
     return out;

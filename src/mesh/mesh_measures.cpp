@@ -37,6 +37,13 @@ double total_area(const TriangleMesh& mesh) {
   return area;
 }
 
+double closed_length(const Polyline& curve) {
+  double length = 0.0;
+  for (std::size_t i = 0; i < curve.size(); ++i)
+    length += std::sqrt(CGAL::squared_distance(curve[i], curve[(i + 1) % curve.size()]));
+  return length;
+}
+
 TriangleMesh triangulate_polygons(const PolygonMesh& mesh) {
   TriangleMesh out;
   out.vertices = mesh.vertices;
