@@ -2,7 +2,10 @@
 #include "envcrust/analysis.h"
 #include "envcrust/errors.h"
 
+#include <CGAL/bounding_box.h>
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -64,15 +67,44 @@ void analyze_loops(AnalysisReport& report, const AnalyzeOptions& options) {
   }
 }
 
+// A lower bound of the Hausdorff distance between two curves: the farthest vertex of either
+// from the other's bounding box.
+double hausdorff_lower_bound(const Polyline& a, const CGAL::Bbox_3& box_a, const Polyline& b, const CGAL::Bbox_3& box_b) {
+  auto farthest_from = [](const Polyline& c, const CGAL::Bbox_3& box) {
+    double worst = 0.0;
+    for (const auto& p : c) {
+      const double dx = std::max({box.xmin() - p.x(), 0.0, p.x() - box.xmax()});
+      const double dy = std::max({box.ymin() - p.y(), 0.0, p.y() - box.ymax()});
+      const double dz = std::max({box.zmin() - p.z(), 0.0, p.z() - box.zmax()});
+      worst = std::max(worst, dx * dx + dy * dy + dz * dz);
+    }
+    return std::sqrt(worst);
+  };
+  return std::max(farthest_from(a, box_b), farthest_from(b, box_a));
+}
+
+// Each reference curve's nearest loop. Loops are tried in order of the lower bound and the
+// exact distance is computed only while the bound is below the best so far (a scan has tens
+// of curves and loops, most of them far apart).
 std::vector<BoundaryMatch> match_boundaries(const topology::MeshTopology& topo, const std::vector<Polyline>& reference) {
   std::vector<Polyline> curves;
-  for (const auto& loop : topo.boundary_loops) curves.push_back(loop.polyline(topo.points));
+  std::vector<CGAL::Bbox_3> boxes;
+  for (const auto& loop : topo.boundary_loops) {
+    curves.push_back(loop.polyline(topo.points));
+    boxes.push_back(CGAL::bbox_3(curves.back().begin(), curves.back().end()));
+  }
   std::vector<BoundaryMatch> matches;
   for (std::size_t r = 0; r < reference.size(); ++r) {
     BoundaryMatch match;
     match.reference_loop = r;
     match.hausdorff = std::numeric_limits<double>::infinity();
-    for (std::size_t m = 0; m < curves.size(); ++m) {
+    const CGAL::Bbox_3 box = CGAL::bbox_3(reference[r].begin(), reference[r].end());
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t m = 0; m < curves.size(); ++m)
+      order.emplace_back(hausdorff_lower_bound(reference[r], box, curves[m], boxes[m]), m);
+    std::sort(order.begin(), order.end());
+    for (const auto& [bound, m] : order) {
+      if (bound >= match.hausdorff) break;
       const double d = distance::closed_polyline_hausdorff(reference[r], curves[m]);
       if (d < match.hausdorff) {
         match.hausdorff = d;
