@@ -2,6 +2,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <string_view>
 
@@ -17,6 +18,21 @@ struct Progress {
     if (callback) callback(stage, fraction);
   }
   [[nodiscard]] bool is_cancelled() const { return cancel != nullptr && cancel->load(); }
+};
+
+/// Wall-clock seconds of the steps of a stage: lap() returns the time since construction or
+/// the last lap.
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace envcrust

@@ -7,32 +7,18 @@
 #include "voronoi_sheet.h"
 
 #include "envcrust/nearest_index.h"
+#include "envcrust/progress.h"
 #include "envcrust/topology.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <iomanip>
 #include <sstream>
 
 namespace envcrust::extract {
 namespace {
-
-// Seconds since construction or the last lap.
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 void validate(const SheetOptions& o) {
   auto fail = [](const std::string& field, double value) {

@@ -1,14 +1,9 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
-#include <chrono>
 
 namespace envcrust::pipeline {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // The optional last step: remesh out.mesh in place (the input comes back on a skip).
 void remesh_result(ReconstructResult& out, const std::optional<remesh::RemeshOptions>& options,
@@ -37,11 +32,11 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   ReconstructResult out;
   if (options.method == Method::PowerCrust) {
     progress.report("power crust", 0.0);
-    const auto t0 = std::chrono::steady_clock::now();
+    Stopwatch clock;
     auto pc_options = options.power_crust;
     pc_options.build_power_shape = false;
     auto pc = powercrust::power_crust(samples.points, pc_options, progress);
-    out.seconds.power_crust = seconds_since(t0);
+    out.seconds.power_crust = clock.lap();
     out.mesh = std::move(pc.crust);
     out.power_crust_stats = pc.stats;
     out.warnings = std::move(pc.warnings);
@@ -51,9 +46,9 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   }
 
   progress.report("envelope", 0.0);
-  auto t0 = std::chrono::steady_clock::now();
+  Stopwatch clock;
   out.envelope = envelope::sample_envelope(samples, options.envelope);
-  out.seconds.envelope = seconds_since(t0);
+  out.seconds.envelope = clock.lap();
   out.warnings = out.envelope.warnings;
   progress.report("envelope", 1.0);
 
@@ -61,11 +56,11 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
       options.extraction == Extraction::PowerShape || options.use_envelope_crust_check;
   if (need_crust) {
     progress.report("power crust of E", 0.0);
-    t0 = std::chrono::steady_clock::now();
+    clock.lap();
     auto pc_options = options.power_crust;
     pc_options.build_power_shape = options.extraction == Extraction::PowerShape;
     auto pc = powercrust::power_crust(out.envelope.points(), pc_options, progress);
-    out.seconds.power_crust = seconds_since(t0);
+    out.seconds.power_crust = clock.lap();
     out.power_crust_stats = pc.stats;
     for (auto& w : pc.warnings) out.warnings.push_back("power crust of the envelope: " + w);
     if (options.extraction == Extraction::PowerShape) out.mesh = power_shape_mesh(pc);
@@ -74,9 +69,9 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   }
   if (options.extraction == Extraction::Sheet) {
     progress.report("medial sheet", 0.0);
-    t0 = std::chrono::steady_clock::now();
+    clock.lap();
     auto sheet = extract::extract_sheet(out.envelope, samples, options.sheet);
-    out.seconds.extraction = seconds_since(t0);
+    out.seconds.extraction = clock.lap();
     out.mesh = std::move(sheet.mesh);
     out.sheet_stats = sheet.stats;
     for (auto& w : sheet.warnings) out.warnings.push_back(std::move(w));

@@ -6,7 +6,6 @@
 
 #include <tbb/task_arena.h>
 
-#include <chrono>
 
 namespace envcrust::powercrust {
 namespace {
@@ -17,9 +16,7 @@ class StageClock {
 
   // Ends the running stage: returns its seconds, reports it done and checks cancellation.
   double lap(std::string_view stage) {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    start_ = now;
+    const double seconds = watch_.lap();
     progress_.report(stage, 1.0);
     if (progress_.is_cancelled()) throw Error("power crust cancelled");
     return seconds;
@@ -28,7 +25,7 @@ class StageClock {
 
  private:
   const Progress& progress_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  Stopwatch watch_;
 };
 
 void count_labels(const std::vector<Pole>& poles, PowerCrustStats& stats) {
