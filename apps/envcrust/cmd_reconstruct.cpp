@@ -474,7 +474,7 @@ void register_reconstruct(CLI::App& app) {
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
   sub->add_flag("--remesh", cmd->use_remesh,
-                "Remesh the result isotropically (keeps topology and boundary; a Moebius band is cut along a seam and welded back)");
+                "Collapse the short edges, then remesh the result isotropically (keeps topology and boundary; a Moebius band is cut along a seam and welded back)");
   sub->add_option_function<double>(
          "--remesh-edge", [cmd](double length) { cmd->remesh.target_edge_length = length; },
          "With --remesh: target edge length (default: --remesh-edge-rel-median x the median edge)");

@@ -50,6 +50,19 @@ std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh);
 /// shared by more than two faces. Returns the number of faces dropped; order is kept.
 std::size_t remove_duplicate_faces(TriangleMesh& mesh);
 
+/// A mesh in an order that keeps neighbours close in memory, and where its vertices came from.
+struct SpatiallyOrdered {
+  TriangleMesh mesh;
+  std::vector<Index> old_vertex;  ///< per vertex of `mesh`, its index in the input
+};
+
+/// Renumber the vertices along a Hilbert curve (CGAL's hilbert_sort, deterministic; not its
+/// spatial_sort, whose rounds of a randomized order undo the locality) and sort
+/// the faces by their smallest new vertex index (stable, windings kept). Meshes built from
+/// Voronoi cells come in an order unrelated to space; halfedge algorithms that walk
+/// neighbourhoods (edge collapse, remeshing) then miss the cache at every step.
+SpatiallyOrdered order_spatially(const TriangleMesh& mesh);
+
 /// `count` points drawn uniformly by area on the triangles, deterministic for `seed`.
 std::vector<Point3> sample_by_area(const TriangleMesh& mesh, std::size_t count,
                                    std::uint64_t seed);

@@ -1,6 +1,7 @@
-// Optional last stage: isotropic remeshing of the reconstruction (CGAL's
-// Polygon_mesh_processing::isotropic_remeshing) that keeps its topology and boundary loops,
-// non-orientable ones included (cut open along a seam, welded back).
+// Optional last stage: isotropic remeshing of the reconstruction (CGAL's edge collapse down
+// to near the target size, then Polygon_mesh_processing::isotropic_remeshing) that keeps its
+// topology and boundary loops, non-orientable ones included (cut open along a seam, welded
+// back).
 #pragma once
 
 #include "envcrust/types.h"
@@ -56,7 +57,8 @@ struct RemeshResult {
   std::vector<std::string> warnings;
 };
 
-/// Remesh a manifold triangle mesh isotropically, keeping its Euler characteristic,
+/// Remesh a manifold triangle mesh isotropically (its edges shorter than 0.8 of the target
+/// collapsed first, no border vertex moving, then CGAL's remeshing rounds), keeping its Euler characteristic,
 /// boundary loops, components and orientability: if any of them changes, the input is
 /// returned unchanged with a warning. A non-orientable mesh (a Möbius band), which CGAL's
 /// halfedge meshes cannot hold, is first cut open along its seam: the edges across which the
