@@ -391,8 +391,19 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << (result.envelope.local_rho.empty() ? "" : ", at least " + std::to_string(result.envelope.rho_min))
               << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size()
               << " samples\n";
-  std::cout << "  time: envelope " << result.seconds.envelope << " s, power crust " << result.seconds.power_crust
-            << " s, extraction " << result.seconds.extraction << " s\n";
+  // The stages that ran (the sheet runs its own Delaunay triangulation, no power crust).
+  std::cout << "  time:";
+  const char* separator = " ";
+  auto stage = [&](const char* name, double seconds) {
+    std::cout << separator << name << " " << seconds << " s";
+    separator = ", ";
+  };
+  if (cmd.options.method == pipeline::Method::Envelope) stage("envelope", result.seconds.envelope);
+  if (result.power_crust_stats)
+    stage(cmd.options.method == pipeline::Method::Envelope ? "power crust of the envelope" : "power crust",
+          result.seconds.power_crust);
+  if (result.sheet_stats) stage("extraction", result.seconds.extraction);
+  std::cout << "\n";
   if (const auto& s = result.remesh_stats; s && s->is_remeshed)
     std::cout << "  remesh: " << s->faces_before << " -> " << s->faces_after << " faces (target edge "
               << s->target_edge_length << "), min angle " << s->min_angle_deg_before << " -> "
