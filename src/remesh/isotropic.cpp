@@ -36,35 +36,44 @@ struct Built {
 
 Built to_surface_mesh(const CutMesh& cut) {
   const mesh::SpatiallyOrdered ordered = mesh::order_spatially(cut.mesh);
-  Built b;
+  Built b{to_halfedge_mesh(ordered.mesh), {}, {}};
   b.on_seam = b.sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:envcrust_on_seam", false).first;
   b.weld_key = b.sm.add_property_map<SurfaceMesh::Vertex_index, Index>("v:envcrust_weld_key", kNoWeldKey).first;
   for (std::size_t v = 0; v < ordered.mesh.vertices.size(); ++v) {
-    const auto vd = b.sm.add_vertex(ordered.mesh.vertices[v]);
     const Index old = ordered.old_vertex[v];
     if (cut.on_seam[old]) {
+      const SurfaceMesh::Vertex_index vd(static_cast<SurfaceMesh::size_type>(v));
       b.on_seam[vd] = true;
       b.weld_key[vd] = cut.weld_key[old];
     }
   }
-  for (const auto& t : ordered.mesh.triangles) {
-    const auto f = b.sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
-                                 SurfaceMesh::Vertex_index(t[2]));
-    if (f == SurfaceMesh::null_face())
-      throw NumericalFailure("remeshing: the faces cannot be oriented into a halfedge mesh");
-  }
-  // The cut faces are consistently oriented and every vertex has one fan (add_face refuses an
-  // edge used twice the same way, not a vertex whose faces form two fans): each vertex's
-  // circulator must reach all of its faces. (Was CGAL's is_polygon_soup_a_polygon_mesh: 4.7 s
-  // of the bunny's 1.8M faces, this check 0.1 s.)
-  std::size_t corners = 0;
-  for (const auto v : b.sm.vertices())
-    if (b.sm.halfedge(v) != SurfaceMesh::null_halfedge())
-      for (const auto f : CGAL::faces_around_target(b.sm.halfedge(v), b.sm))
-        if (f != SurfaceMesh::null_face()) ++corners;
-  if (corners != 3 * b.sm.number_of_faces())
-    throw NumericalFailure("remeshing: the faces cannot be oriented into a halfedge mesh");
   return b;
+}
+
+// What one remeshing round does to the true border: as the BoundaryMode says, or nothing.
+enum class Border { Resample, Keep, Fixed };
+
+// The cut mesh with its short edges collapsed (collapse.h), the seam fixed and its vertices'
+// marks and keys carried over (vertices that moved have no key; only seam keys are read).
+void collapse_cut_mesh(CutMesh& cut, double target_edge_length, Border border_mode) {
+  std::vector<char> fixed(cut.on_seam.begin(), cut.on_seam.end());
+  CollapseOptions options;
+  options.max_length = 0.8 * target_edge_length;
+  options.max_border_edge = 4.0 / 3.0 * target_edge_length;
+  options.border = border_mode == Border::Resample ? BorderCollapse::AlongBorder : BorderCollapse::Frozen;
+  Collapsed collapsed = collapse_short_edges(cut.mesh, fixed, options);
+  std::vector<bool> on_seam(collapsed.mesh.vertices.size(), false);
+  std::vector<Index> weld_key(collapsed.mesh.vertices.size(), kNoWeldKey);
+  for (std::size_t v = 0; v < on_seam.size(); ++v) {
+    const Index input = collapsed.input_vertex[v];
+    if (input != std::numeric_limits<Index>::max() && cut.on_seam[input]) {
+      on_seam[v] = true;
+      weld_key[v] = cut.weld_key[input];
+    }
+  }
+  cut.mesh = std::move(collapsed.mesh);
+  cut.on_seam = std::move(on_seam);
+  cut.weld_key = std::move(weld_key);
 }
 
 // A remeshed mesh, welded, and its faces at the seam it was cut along (none for an empty
@@ -102,9 +111,6 @@ Remeshed to_triangle_mesh(const Built& b) {
   return {weld(out, key), std::move(seam_faces)};  // welding keeps the faces and their order
 }
 
-// What one remeshing round does to the true border: as the BoundaryMode says, or nothing.
-enum class Border { Resample, Keep, Fixed };
-
 // Closest points on a triangle soup (the input mesh, which every round projects onto instead
 // of onto its own input).
 class SoupProjection {
@@ -137,18 +143,17 @@ Remeshed remesh_cut_open(const TriangleMesh& mesh, const std::vector<std::uint32
                          unsigned int iterations, Border border_mode, const SoupProjection& projection) {
   CutMesh cut = cut_along_seam(mesh, first_faces);
   split_long_seam_edges(cut, target_edge_length);
+  // Start near the target size: the sheet's median edge is about a third of the target, and
+  // CGAL's remeshing rounds are slower at collapsing than its edge collapse (bunny sheet,
+  // 1.8M faces: 24 s of collapsing in one piece + 8 s of remeshing, where remeshing alone
+  // took 38 s; in 9 pieces on 2 cores the whole stage takes 20 s).
+  // Remeshing then projects onto the input, not onto the collapsed mesh. (A later round,
+  // Border::Fixed, starts from a remeshed mesh.)
+  if (border_mode != Border::Fixed) collapse_cut_mesh(cut, target_edge_length, border_mode);
   Built b = to_surface_mesh(cut);
   SurfaceMesh& sm = b.sm;
   auto constrained = sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:envcrust_constrained", false).first;
   for (const auto v : sm.vertices()) constrained[v] = b.on_seam[v] || (border_mode == Border::Fixed && sm.is_border(v));
-  // Start near the target size: the sheet's median edge is about a third of the target, and
-  // CGAL's remeshing rounds are slower at collapsing than its edge collapse (bunny sheet,
-  // 1.8M faces: 24 s of collapsing + 8 s of remeshing, where remeshing alone took 38 s).
-  // Remeshing then projects onto the input, not onto the collapsed mesh. (A later round,
-  // Border::Fixed, starts from a remeshed mesh.)
-  if (border_mode != Border::Fixed)
-    collapse_short_edges(sm, constrained, 0.8 * target_edge_length, 4.0 / 3.0 * target_edge_length,
-                         border_mode == Border::Resample ? BorderCollapse::AlongBorder : BorderCollapse::Frozen);
   const auto params = CGAL::parameters::number_of_iterations(iterations).vertex_is_constrained_map(constrained);
   auto project = [&](SurfaceMesh::Vertex_index v) { return projection.closest_point(sm.point(v)); };
   if (border_mode == Border::Keep) {
