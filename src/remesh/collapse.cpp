@@ -5,6 +5,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
+#include "envcrust/mesh_graph.h"
 
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_cost.h>
@@ -108,6 +109,30 @@ struct Piece {
   std::vector<char> fixed;
 };
 
+// A vertex whose faces in the piece form several fans (the rest of its faces lie in other
+// pieces: it is shared, hence fixed; common, e.g. ~50 per piece of a 28,800-face grid cut in
+// 9) gets a copy per further fan, with the same input vertex, so that the piece is the
+// manifold CGAL's edge collapse expects; the copies merge back with the other pieces'.
+void split_fans(Piece& piece) {
+  const auto graph = topology::build_mesh_graph(piece.mesh.triangles, piece.mesh.vertices.size());
+  const auto fan = topology::corner_fans(graph);
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> first_fan(piece.mesh.vertices.size(), none);
+  std::unordered_map<std::uint32_t, Index> copy_of_fan;
+  for (std::uint32_t c = 0; c < fan.size(); ++c) {
+    Index& v = piece.mesh.triangles[c / 3][c % 3];
+    if (first_fan[v] == none) first_fan[v] = fan[c];
+    if (first_fan[v] == fan[c]) continue;
+    auto [it, is_new] = copy_of_fan.emplace(fan[c], static_cast<Index>(piece.mesh.vertices.size()));
+    if (is_new) {
+      piece.mesh.vertices.push_back(piece.mesh.vertices[v]);
+      piece.input_vertex.push_back(piece.input_vertex[v]);
+      piece.fixed.push_back(piece.fixed[v]);
+    }
+    v = it->second;
+  }
+}
+
 }  // namespace
 
 SurfaceMesh to_halfedge_mesh(const TriangleMesh& mesh) {
@@ -169,6 +194,7 @@ Collapsed collapse_short_edges(const TriangleMesh& mesh, const std::vector<char>
       }
       piece.mesh.triangles.push_back(tri);
     }
+    split_fans(piece);
     SurfaceMesh sm = to_halfedge_mesh(piece.mesh);
     auto is_fixed = sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:envcrust_fixed", false).first;
     auto origin = sm.add_property_map<SurfaceMesh::Vertex_index, Index>("v:envcrust_origin", unset).first;

@@ -42,8 +42,8 @@ TEST(CollapseShortEdges, pieces_come_back_as_one_mesh_with_the_inputs_topology) 
   remesh::CollapseOptions options;
   options.max_length = 0.03;
   options.max_border_edge = 0.05;
-  for (const std::size_t per_piece : {std::size_t{1000000}, std::size_t{3000}, std::size_t{1000}}) {
-    options.faces_per_piece = per_piece;  // 1, 9 and 28 pieces
+  for (const std::size_t per_piece : {std::size_t{1000000}, std::size_t{3000}, std::size_t{1000}, std::size_t{1}}) {
+    options.faces_per_piece = per_piece;  // 1, 9, 28 and 64 pieces (at most)
     const auto out = remesh::collapse_short_edges(grid, fixed, options);
     SCOPED_TRACE(per_piece);
     // The bands along the pieces' shared vertices stay fine (the remeshing takes them on).
