@@ -146,7 +146,7 @@ Remeshed remesh_cut_open(const TriangleMesh& mesh, const std::vector<std::uint32
   // Start near the target size: the sheet's median edge is about a third of the target, and
   // CGAL's remeshing rounds are slower at collapsing than its edge collapse (bunny sheet,
   // 1.8M faces: 24 s of collapsing in one piece + 8 s of remeshing, where remeshing alone
-  // took 38 s; in 9 pieces on 2 cores the whole stage takes 20 s).
+  // took 38 s; in 8 pieces on 2 cores the whole stage takes 20 s).
   // Remeshing then projects onto the input, not onto the collapsed mesh. (A later round,
   // Border::Fixed, starts from a remeshed mesh.)
   if (border_mode != Border::Fixed) collapse_cut_mesh(cut, target_edge_length, border_mode);
