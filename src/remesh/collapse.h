@@ -50,8 +50,9 @@ struct Collapsed {
 Collapsed collapse_short_edges(const TriangleMesh& mesh, const std::vector<char>& fixed,
                                const CollapseOptions& options);
 
-/// The mesh as a CGAL Surface_mesh, vertex i being vertex i.
-/// @throws NumericalFailure when the faces do not form an oriented manifold.
+/// The mesh (an oriented manifold: pinched vertices are not all caught) as a CGAL
+/// Surface_mesh, vertex i being vertex i.
+/// @throws NumericalFailure when the faces do not fit a halfedge mesh.
 SurfaceMesh to_halfedge_mesh(const TriangleMesh& mesh);
 
 }  // namespace envcrust::remesh

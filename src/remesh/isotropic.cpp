@@ -25,9 +25,10 @@ namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// The cut mesh as a Surface_mesh, its vertices and faces in spatial order (mesh.h; an order
-// unrelated to space made the edge collapse miss the cache at every step). Seam vertices
-// are marked and carry their weld key (other vertices, new ones included, have none).
+// The cut mesh as a Surface_mesh, its vertices and faces in spatial order (mesh.h; the
+// remeshing walks neighbourhoods, and a round after the collapse gets the pieces' vertices
+// concatenated). Seam vertices are marked and carry their weld key (other vertices, new ones
+// included, have none).
 struct Built {
   SurfaceMesh sm;
   SurfaceMesh::Property_map<SurfaceMesh::Vertex_index, bool> on_seam;
