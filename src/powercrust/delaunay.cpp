@@ -8,6 +8,8 @@
 
 namespace envcrust::powercrust {
 
+static_assert(sizeof(Delaunay::Cell) == 64, "CompactCell: 4 neighbours and 4 tagged vertex pointers");
+
 std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double scale) {
   const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());
   const double extent = std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(),
@@ -41,16 +43,6 @@ std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
   dt->insert(input.begin(), input.end());
   dt->set_lock_data_structure(nullptr);
   return dt;
-}
-
-std::vector<Delaunay::Cell_handle> number_finite_cells(Delaunay& dt) {
-  std::vector<Delaunay::Cell_handle> cells;
-  cells.reserve(dt.number_of_finite_cells());
-  for (auto c : dt.finite_cell_handles()) {
-    c->info() = static_cast<Index>(cells.size());
-    cells.push_back(c);
-  }
-  return cells;
 }
 
 }  // namespace envcrust::powercrust

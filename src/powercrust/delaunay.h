@@ -3,9 +3,11 @@
 
 #include "envcrust/types.h"
 
+#include "compact_cell.h"
+
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_cell_base_3.h>
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
@@ -16,11 +18,11 @@
 namespace envcrust::powercrust {
 
 using DtVertexBase = CGAL::Triangulation_vertex_base_with_info_3<Index, Kernel>;
-using DtCellBase = CGAL::Triangulation_cell_base_with_info_3<
-    Index, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using DtCellBase =
+    CGAL::Delaunay_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel, CompactCell<>>>;
 using DtTds = CGAL::Triangulation_data_structure_3<DtVertexBase, DtCellBase, CGAL::Parallel_tag>;
-/// Vertex info: sample id, or samples.size() + k for bounding corner k. Cell info: the cell's
-/// position in the vector returned by number_finite_cells.
+/// Vertex info: sample id, or samples.size() + k for bounding corner k. Cells are CompactCell
+/// (64 bytes, no info): a 1M-sample torus has 20M of them.
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, DtTds>;
 
 /// The 8 corners of the cube centred at the samples' bbox midpoint with half-width
@@ -31,8 +33,5 @@ std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double
 /// The result holds no lock structure any more: it is meant to be read, from many threads.
 std::unique_ptr<Delaunay> build_delaunay(const std::vector<Point3>& samples,
                                          const std::array<Point3, 8>& corners, bool parallel);
-
-/// Finite cells in iteration order; sets each cell's info to its position.
-std::vector<Delaunay::Cell_handle> number_finite_cells(Delaunay& dt);
 
 }  // namespace envcrust::powercrust

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <memory>
 #include <numeric>
@@ -52,9 +53,12 @@ Point3 circumcentre(Cell c) {
                       Weighted(v[3]->point()));
 }
 
-// The cells of p+ and p- of one sample, with their circumcentres.
+// A cell's address as a key: it tells the cells apart after the triangulation is freed.
+std::uintptr_t cell_address(Cell c) { return reinterpret_cast<std::uintptr_t>(c.operator->()); }
+
+// The cells of p+ and p- of one sample (their addresses), with their circumcentres.
 struct PoleChoice {
-  std::array<Cell, 2> cells;     ///< outer, inner
+  std::array<std::uintptr_t, 2> cells;  ///< outer, inner
   std::array<Point3, 2> centres;
 };
 
@@ -146,7 +150,7 @@ std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n) {
   });
   std::vector<PoleChoice> chosen(n);
   parallel_indices(n, [&](std::size_t i) {
-    chosen[i].cells[0] = outer[i].cell;
+    chosen[i].cells[0] = cell_address(outer[i].cell);
     chosen[i].centres[0] = circumcentre(outer[i].cell);
   });
   outer = {};
@@ -168,8 +172,9 @@ std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n) {
   parallel_indices(n, [&](std::size_t i) {
     // A bounded Voronoi cell always has a vertex on the far side of s; the fallback (the
     // most opposite one) only guards against rounding in the dot product.
-    chosen[i].cells[1] = inner[i].cell != Cell() ? inner[i].cell : fallback[i].cell;
-    chosen[i].centres[1] = circumcentre(chosen[i].cells[1]);
+    const Cell c = inner[i].cell != Cell() ? inner[i].cell : fallback[i].cell;
+    chosen[i].cells[1] = cell_address(c);
+    chosen[i].centres[1] = circumcentre(c);
   });
   return chosen;
 }
@@ -178,9 +183,9 @@ std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n) {
 // cell: poles are then numbered in that order (p+ before p-) whatever the cells' addresses.
 std::vector<std::size_t> first_choice_of_cell(const std::vector<PoleChoice>& chosen,
                                               const std::vector<std::size_t>& order) {
-  std::vector<std::pair<const void*, std::size_t>> by_cell(2 * chosen.size());
+  std::vector<std::pair<std::uintptr_t, std::size_t>> by_cell(2 * chosen.size());
   tbb::parallel_for(std::size_t{0}, chosen.size(), [&](std::size_t j) {
-    for (int side = 0; side < 2; ++side) by_cell[2 * j + side] = {&*chosen[order[j]].cells[side], 2 * j + side};
+    for (int side = 0; side < 2; ++side) by_cell[2 * j + side] = {chosen[order[j]].cells[side], 2 * j + side};
   });
   tbb::parallel_sort(by_cell.begin(), by_cell.end());
   std::vector<std::size_t> first(by_cell.size());
@@ -243,6 +248,32 @@ std::vector<std::size_t> spatial_order(const std::vector<Point3>& samples) {
   return order;
 }
 
+// Every finite cell with its circumcentre and the pole it became (choice_pole as in
+// compute_poles), for PowerCrustOptions::keep_delaunay_cells.
+std::vector<DelaunayCell> delaunay_cells(const Delaunay& dt, const std::vector<PoleChoice>& chosen,
+                                         const std::vector<std::size_t>& order,
+                                         const std::vector<Index>& choice_pole) {
+  std::vector<std::pair<std::uintptr_t, Index>> cell_pole(choice_pole.size());
+  for (std::size_t k = 0; k < choice_pole.size(); ++k)
+    cell_pole[k] = {chosen[order[k / 2]].cells[k % 2], choice_pole[k]};
+  std::sort(cell_pole.begin(), cell_pole.end());
+  std::vector<Cell> cells;
+  cells.reserve(dt.number_of_finite_cells());
+  for (Cell c : dt.finite_cell_handles()) cells.push_back(c);
+  std::vector<DelaunayCell> out(cells.size());
+  parallel_indices(cells.size(), [&](std::size_t k) {
+    const auto v = sorted_vertices(cells[k]);
+    DelaunayCell& c = out[k];
+    for (int j = 0; j < 4; ++j) c.vertices[j] = v[j]->info();
+    c.center = circumcentre(cells[k]);
+    c.radius = std::sqrt(CGAL::squared_distance(c.center, v[0]->point()));
+    const auto it = std::lower_bound(cell_pole.begin(), cell_pole.end(),
+                                     std::pair<std::uintptr_t, Index>{cell_address(cells[k]), 0});
+    c.pole = it != cell_pole.end() && it->first == cell_address(cells[k]) ? it->second : kNoPole;
+  });
+  return out;
+}
+
 }  // namespace
 
 PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells) {
@@ -250,6 +281,10 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
   PoleStage out;
   out.finite_cells = dt->number_of_finite_cells();
   std::vector<PoleChoice> chosen = choose_poles(*dt, n);
+  // The triangulation is the largest object of the run: free it as soon as the poles are
+  // chosen (the power diagram comes next, and the two are never held together, METHOD 4.11).
+  // What follows needs the centres and the cells' addresses only.
+  if (!keep_cells) dt.reset();
   const std::vector<std::size_t> order = spatial_order(samples);
 
   // One pole per chosen cell, numbered in the samples' spatial order (p+ before p-): poles
@@ -263,22 +298,9 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
       choice_pole[k] = first[k] == k ? static_cast<Index>(pole_count++) : choice_pole[first[k]];  // first[k] < k
   }
   if (keep_cells) {
-    const std::vector<Cell> cells = number_finite_cells(*dt);
-    std::vector<Index> cell_pole(cells.size(), kNoPole);
-    for (std::size_t k = 0; k < 2 * n; ++k) cell_pole[chosen[order[k / 2]].cells[k % 2]->info()] = choice_pole[k];
-    out.cells.resize(cells.size());
-    parallel_indices(cells.size(), [&](std::size_t k) {
-      const auto v = sorted_vertices(cells[k]);
-      DelaunayCell& c = out.cells[k];
-      for (int j = 0; j < 4; ++j) c.vertices[j] = v[j]->info();
-      c.center = circumcentre(cells[k]);
-      c.radius = std::sqrt(CGAL::squared_distance(c.center, v[0]->point()));
-      c.pole = cell_pole[k];
-    });
+    out.cells = delaunay_cells(*dt, chosen, order, choice_pole);
+    dt.reset();
   }
-  // The triangulation is the largest object of the run: free it before the poles are built
-  // (the power diagram comes next, and the two are never held together, METHOD 4.11).
-  dt.reset();
 
   out.poles.reserve(pole_count);
   out.sample_poles.resize(n);

@@ -16,6 +16,8 @@
 #include <utility>
 
 namespace envcrust::powercrust {
+
+static_assert(sizeof(Regular::Cell) == 72, "RtCellBase: CompactCell and an empty hidden-point container");
 namespace {
 
 // Poles per block of the graph build: rows are gathered per block, then copied in place.
