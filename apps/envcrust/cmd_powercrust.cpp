@@ -76,6 +76,7 @@ void run_powercrust(PowerCrustCommand& cmd) {
       {"duplicate_points", s.duplicate_points}, {"delaunay_cells", s.delaunay_cells}, {"poles", s.poles},
       {"inner_poles", s.inner_poles}, {"outer_poles", s.outer_poles}, {"unknown_poles", s.unknown_poles},
       {"resolved_unknown_poles", s.resolved_unknown_poles}, {"hidden_poles", s.hidden_poles},
+      {"filtered_poles", s.filtered_poles},
       {"crust_faces", s.crust_faces},
       {"crust", {{"euler_characteristic", crust.euler_characteristic}, {"is_closed", crust.is_closed()},
                  {"is_manifold", crust.is_manifold()}, {"components", crust.components.size()},
@@ -91,7 +92,10 @@ void run_powercrust(PowerCrustCommand& cmd) {
   if (cmd.common.quiet) return;
   std::cout << "power crust of " << cmd.input << ": " << s.input_points << " points (" << s.duplicate_points
             << " duplicates merged), " << s.poles << " poles (" << s.inner_poles << " in, " << s.outer_poles
-            << " out, " << s.unknown_poles << " unknown), " << s.crust_faces << " crust triangles\n"
+            << " out, " << s.unknown_poles << " unknown"
+            << (s.filtered_poles > 0 ? ", " + std::to_string(s.filtered_poles) + " below --min-pole-radius left out"
+                                     : std::string())
+            << "), " << s.crust_faces << " crust triangles\n"
             << "  crust: chi " << crust.euler_characteristic << ", " << (crust.is_closed() ? "closed" : "open")
             << ", " << (crust.is_manifold() ? "manifold" : "non-manifold") << "\n"
             << "  seconds: delaunay " << s.seconds_delaunay << ", poles " << s.seconds_poles << ", power diagram "
@@ -129,6 +133,12 @@ void register_powercrust(CLI::App& app) {
                   "Move each pole by up to this fraction of the smaller of its radius and the input's box diagonal "
                   "(deterministic) before the power diagram, so exact samples (sphere, torus) do not put the poles "
                   "in degenerate position; 0: off")
+      ->capture_default_str();
+  sub->add_option("--min-pole-radius", cmd->options.min_pole_radius_rel_spacing,
+                  "Noisy input: leave out poles whose radius is below this many local sample spacings (median "
+                  "nearest-neighbour distance around the sample), which noise makes and the labeling gets wrong "
+                  "(handles, bubbles); 3 suits 0.1% noise; 0: off, as the original")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   sub->add_flag("--keep-unknown", cmd->keep_unknown,
                 "Leave poles the labeling could not decide unlabeled, as the original does (may open the crust)");

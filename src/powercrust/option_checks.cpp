@@ -31,6 +31,9 @@ Thresholds check_options(const PowerCrustOptions& options) {
   if (!(options.bounding_box_scale > 1.0) || !std::isfinite(options.bounding_box_scale))
     throw InvalidOptions("PowerCrustOptions.bounding_box_scale must be a finite number > 1 (got " +
                          format_value(options.bounding_box_scale) + ")");
+  if (!(options.min_pole_radius_rel_spacing >= 0.0) || !std::isfinite(options.min_pole_radius_rel_spacing))
+    throw InvalidOptions("PowerCrustOptions.min_pole_radius_rel_spacing must be a finite number >= 0 (got " +
+                         format_value(options.min_pole_radius_rel_spacing) + ")");
   Thresholds t;
   if (options.preset == LabelPreset::Readme) t = {0.4, 0.3};
   if (options.neighbor_threshold)

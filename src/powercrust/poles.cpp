@@ -1,4 +1,5 @@
 // Voronoi vertices and poles of the samples, with welding and opposite-pole weights (METHOD 4.4-4.5).
+#include "incident_cells.h"
 #include "robust_centres.h"
 #include "stages.h"
 
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <numeric>
@@ -134,20 +136,27 @@ class SampleLocks {
 // side of p+. Each circumcentre is computed once per pass: storing them (24 bytes x 20 cells
 // per sample on an exact torus) was the stage's peak memory, and collecting each sample's
 // cells cost a hash-set walk per sample.
-std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n) {
+std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vector<double>& nearest) {
   SampleLocks locks(n);
   std::vector<Candidate> outer(n);
+  nearest.assign(n, std::numeric_limits<double>::infinity());
   parallel_for_each_finite_cell(dt, [&](Cell c) {
     const Point3 centre = circumcentre(c);
     for (int j = 0; j < 4; ++j) {
       const auto v = c->vertex(j);
       if (v->info() >= n) continue;  // a bounding corner
       const double d = CGAL::squared_distance(centre, v->point());
+      double edge = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < 4; ++k)
+        if (k != j && c->vertex(k)->info() < n)
+          edge = std::min(edge, CGAL::squared_distance(v->point(), c->vertex(k)->point()));
       locks.with(v->info(), [&] {
         if (ranks_above(d, centre, c, outer[v->info()])) outer[v->info()] = {d, c};
+        nearest[v->info()] = std::min(nearest[v->info()], edge);
       });
     }
   });
+  for (double& d : nearest) d = std::sqrt(d);
   std::vector<PoleChoice> chosen(n);
   parallel_indices(n, [&](std::size_t i) {
     chosen[i].cells[0] = cell_address(outer[i].cell);
@@ -274,13 +283,48 @@ std::vector<DelaunayCell> delaunay_cells(const Delaunay& dt, const std::vector<P
   return out;
 }
 
+// Per sample, the median of `nearest` over the sample and its Delaunay neighbours: a local
+// spacing that one close pair (noise) or one lonely sample does not set alone.
+std::vector<double> median_neighbour_spacing(const Delaunay& dt, const std::vector<double>& nearest) {
+  const std::size_t n = nearest.size();
+  std::vector<double> out(n, 0.0);
+  std::vector<Delaunay::Vertex_handle> vertices;
+  vertices.reserve(n);
+  for (auto v : dt.finite_vertex_handles())
+    if (v->info() < n) vertices.push_back(v);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      IncidentCells<Delaunay> incident;
+                      std::vector<Index> ids;
+                      std::vector<double> values;
+                      for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                        const auto v = vertices[k];
+                        ids.clear();
+                        for (Cell c : incident(v))
+                          for (int j = 0; j < 4; ++j)
+                            if (!dt.is_infinite(c->vertex(j)) && c->vertex(j)->info() < n) ids.push_back(c->vertex(j)->info());
+                        std::sort(ids.begin(), ids.end());
+                        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());  // v itself included
+                        values.clear();
+                        for (Index id : ids) values.push_back(nearest[id]);
+                        const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+                        std::nth_element(values.begin(), middle, values.end());
+                        out[v->info()] = *middle;
+                      }
+                    });
+  return out;
+}
+
 }  // namespace
 
-PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells) {
+PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells,
+                        bool local_spacing) {
   const std::size_t n = samples.size();
   PoleStage out;
   out.finite_cells = dt->number_of_finite_cells();
-  std::vector<PoleChoice> chosen = choose_poles(*dt, n);
+  std::vector<double> nearest;
+  std::vector<PoleChoice> chosen = choose_poles(*dt, n, nearest);
+  if (local_spacing) out.local_spacing = median_neighbour_spacing(*dt, nearest);
   // The triangulation is the largest object of the run: free it as soon as the poles are
   // chosen (the power diagram comes next, and the two are never held together, METHOD 4.11).
   // What follows needs the centres and the cells' addresses only.

@@ -4,6 +4,9 @@
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
 
+#include <algorithm>
+#include <limits>
+
 #include <tbb/task_arena.h>
 
 
@@ -36,6 +39,19 @@ void count_labels(const std::vector<Pole>& poles, PowerCrustStats& stats) {
   }
 }
 
+// Poles below `ratio` local spacings of the samples that chose them (the smallest such
+// spacing): left out of the power diagram (PowerCrustOptions::min_pole_radius_rel_spacing).
+std::vector<bool> small_poles(const PowerCrustResult& result, const std::vector<double>& spacing, double ratio) {
+  if (ratio <= 0) return {};
+  std::vector<double> scale(result.poles.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < result.samples.size(); ++i)
+    for (Index p : {result.sample_poles[i].outer, result.sample_poles[i].inner})
+      scale[p] = std::min(scale[p], spacing[i]);
+  std::vector<bool> skip(result.poles.size());
+  for (std::size_t p = 0; p < result.poles.size(); ++p) skip[p] = result.poles[p].radius < ratio * scale[p];
+  return skip;
+}
+
 }  // namespace
 
 PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrustOptions& options,
@@ -61,6 +77,7 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     return options.parallel_insertion_from == 0 || (spare_cores && n >= options.parallel_insertion_from);
   };
   StageClock clock(progress);
+  std::vector<double> local_spacing;
   {
     clock.begin("delaunay");
     std::unique_ptr<Delaunay> dt = build_delaunay(result.samples, result.bounding_points,
@@ -69,10 +86,12 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     clock.begin("poles");
     // compute_poles frees the DT, the largest object besides the RT: the two are never held
     // together (METHOD 4.11).
-    PoleStage poles = compute_poles(std::move(dt), result.samples, options.keep_delaunay_cells);
+    PoleStage poles = compute_poles(std::move(dt), result.samples, options.keep_delaunay_cells,
+                                     options.min_pole_radius_rel_spacing > 0);
     result.poles = std::move(poles.poles);
     result.sample_poles = std::move(poles.sample_poles);
     result.delaunay_cells = std::move(poles.cells);
+    local_spacing = std::move(poles.local_spacing);
     stats.delaunay_cells = poles.finite_cells;
     stats.welded_poles = poles.welded_poles;
     stats.poles = result.poles.size();
@@ -81,9 +100,11 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
 
   clock.begin("power_diagram");
   const CGAL::Bbox_3 sample_box = CGAL::bbox_3(result.samples.begin(), result.samples.end());
+  const std::vector<bool> skip = small_poles(result, local_spacing, options.min_pole_radius_rel_spacing);
+  stats.filtered_poles = static_cast<std::size_t>(std::count(skip.begin(), skip.end(), true));
   const PowerDiagram diagram =
       build_power_diagram(result.poles, sample_box, parallel(result.poles.size()),
-                          options.pole_joggle);
+                          options.pole_joggle, skip);
   stats.power_diagram_cells = diagram.rt->number_of_finite_cells();
   stats.seconds_power_diagram = clock.lap("power_diagram");
 

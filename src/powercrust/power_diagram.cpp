@@ -104,7 +104,7 @@ double intersection_weight(const Pole& p, const Pole& q) {
 }
 
 PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel,
-                                 double joggle) {
+                                 double joggle, const std::vector<bool>& skip) {
   PowerDiagram out;
   if (joggle > 0) {
     const double diagonal = std::sqrt(CGAL::square(lock_box.xmax() - lock_box.xmin()) +
@@ -118,7 +118,7 @@ PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& l
   std::vector<std::pair<Weighted, Index>> input;
   input.reserve(poles.size());
   for (std::size_t i = 0; i < poles.size(); ++i)
-    input.emplace_back(out.site(poles, static_cast<Index>(i)), static_cast<Index>(i));
+    if (skip.empty() || !skip[i]) input.emplace_back(out.site(poles, static_cast<Index>(i)), static_cast<Index>(i));
   {
     Regular::Lock_data_structure lock(lock_box, 50);
     out.rt = std::make_unique<Regular>(Kernel(), parallel ? &lock : nullptr);

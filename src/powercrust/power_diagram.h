@@ -56,8 +56,9 @@ struct PowerDiagram {
 /// and set Pole::is_hidden. With joggle > 0 each site moves by up to joggle times the smaller
 /// of its radius and the box diagonal per coordinate (the radius alone would move the far
 /// outer poles of a convex surface, and the crust with them, by a fraction of the box).
+/// Poles marked in `skip` (empty: none) are not inserted and come out hidden.
 PowerDiagram build_power_diagram(std::vector<Pole>& poles, const CGAL::Bbox_3& lock_box, bool parallel,
-                                 double joggle);
+                                 double joggle, const std::vector<bool>& skip = {});
 
 /// For each hidden pole, the visible pole whose power cell holds its (moved) centre: the ball
 /// that hides it, whose label it shares. kNoPole for visible poles.

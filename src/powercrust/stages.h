@@ -33,14 +33,19 @@ struct PoleStage {
   std::vector<Pole> poles;
   std::vector<SamplePoles> sample_poles;
   std::vector<DelaunayCell> cells;  ///< only when asked for
+  /// Per sample, when asked for: the median nearest-neighbour distance of the sample and its
+  /// Delaunay neighbours.
+  std::vector<double> local_spacing;
   std::size_t finite_cells = 0;
   std::size_t welded_poles = 0;
 };
 
 /// Compute Voronoi vertices, poles (welded where balls agree to ~1e-11 diag, ids in the
 /// samples' spatial order) and the opposite-pole weights. Frees the triangulation as soon as
-/// the poles are chosen.
-PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells);
+/// the poles are chosen. With `local_spacing`, also each sample's local spacing (the median
+/// nearest-neighbour distance over it and its Delaunay neighbours).
+PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells,
+                        bool local_spacing);
 
 /// What labeling did beyond setting Pole::label.
 struct LabelingReport {

@@ -98,4 +98,8 @@ TEST(PowerCrustChecks, options_out_of_range_name_field_and_value) {
   options.second_pass_threshold = -1.5;
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
             "PowerCrustOptions.second_pass_threshold must be in [-1, 1] (got -1.5)");
+  options = {};
+  options.min_pole_radius_rel_spacing = -1.0;
+  EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
+            "PowerCrustOptions.min_pole_radius_rel_spacing must be a finite number >= 0 (got -1)");
 }
