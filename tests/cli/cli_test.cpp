@@ -408,6 +408,18 @@ TEST_F(CliTest, powercrust_of_a_torus_sample_is_a_closed_torus) {
   EXPECT_EQ(static_cast<std::size_t>(std::count(poles.begin(), poles.end(), '\n')), j["poles"].get<std::size_t>() + 1);
 }
 
+TEST_F(CliTest, powercrust_leaves_out_small_poles_of_a_noisy_sample) {
+  ASSERT_EQ(run_envcrust("sample sphere -n 20000 --noise 0.001 --seed 2 -q -o " + path("s.xyz")).exit_code, 0);
+  const auto j = run_envcrust_json("powercrust " + path("s.xyz") + " --min-pole-radius 3 -o " + path("s.ply") + " --json");
+  EXPECT_GT(j["filtered_poles"].get<std::size_t>(), j["poles"].get<std::size_t>() / 10);
+  EXPECT_EQ(j["crust"]["euler_characteristic"], 2);
+  EXPECT_EQ(j["crust"]["is_closed"], true);
+  const auto r = run_envcrust("powercrust " + path("s.xyz") + " --min-pole-radius -1 -o " + path("x.ply"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("--min-pole-radius"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 TEST_F(CliTest, powercrust_refuses_coplanar_points) {
   {
     std::ofstream f(path("flat.xyz"));
