@@ -138,7 +138,7 @@ void register_powercrust(CLI::App& app) {
                   "Noisy input: leave out poles whose radius is below this many local sample spacings (median "
                   "nearest-neighbour distance around the sample), which noise makes and the labeling gets wrong "
                   "(handles, bubbles); 3 suits 0.1% noise; 0: off, as the original")
-      ->check(CLI::NonNegativeNumber)
+      ->check(number_above(0, true))
       ->capture_default_str();
   sub->add_flag("--keep-unknown", cmd->keep_unknown,
                 "Leave poles the labeling could not decide unlabeled, as the original does (may open the crust)");
