@@ -2,7 +2,7 @@
 // triangulation of the same points (sequential and parallel), and peak memory. Each
 // measurement runs in a forked child, so every peak RSS belongs to one run. Usage:
 //   envcrust_bench_powercrust [--sizes 10000,100000,1000000] [--surfaces sphere,torus]
-//                             [--noise 0.001] [--parallel-from 200000] [--check]
+//                             [--noise 0.001] [--min-pole-radius 3] [--parallel-from 200000] [--check]
 #include "peak_memory.h"
 
 #include "envcrust/power_crust.h"
@@ -39,6 +39,7 @@ struct Args {
   std::vector<std::string> surfaces = {"sphere", "torus"};
   double noise = 0.0;
   double joggle = powercrust::PowerCrustOptions().pole_joggle;
+  double min_pole_radius = 0.0;
   bool check = false;
   std::size_t parallel_from = powercrust::PowerCrustOptions().parallel_insertion_from;
 };
@@ -75,12 +76,14 @@ Args parse(int argc, char** argv) {
       a.noise = std::stod(argv[++i]);
     } else if (key == "--parallel-from" && has_value) {
       a.parallel_from = std::stoul(argv[++i]);
+    } else if (key == "--min-pole-radius" && has_value) {
+      a.min_pole_radius = std::stod(argv[++i]);
     } else if (key == "--joggle" && has_value) {
       a.joggle = std::stod(argv[++i]);
     } else if (key == "--check") {
       a.check = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--sizes a,b] [--surfaces s,t] [--noise x] [--joggle x] [--parallel-from n] [--check]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes a,b] [--surfaces s,t] [--noise x] [--joggle x] [--min-pole-radius k] [--parallel-from n] [--check]\n", argv[0]);
       std::exit(2);
     }
   }
@@ -104,6 +107,7 @@ Measurement run_power_crust(const std::vector<Point3>& points, const Args& args)
   powercrust::PowerCrustOptions options;
   options.parallel_insertion_from = args.parallel_from;
   options.pole_joggle = args.joggle;
+  options.min_pole_radius_rel_spacing = args.min_pole_radius;
   Progress progress;
   const char* stage_names[] = {"delaunay", "poles", "power_diagram", "labeling", "crust", "power_shape"};
   bench::take_peak_mb();
