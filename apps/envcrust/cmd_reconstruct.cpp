@@ -34,6 +34,7 @@ struct ReconstructCommand {
   std::string reference;
   std::string report_file;
   bool no_analysis = false;
+  bool no_adaptive_retry = false;
   bool use_remesh = false;
   remesh::RemeshOptions remesh;  // used with --remesh
   std::string orientable = "auto";    // --orientable: auto, yes or no
@@ -240,6 +241,51 @@ void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   sheet.cut_handles_rel_rho = 0;
 }
 
+// A mesh input knows its own topology. When the automatic uniform rho gives the sheet more
+// handles or cross-caps than the input mesh has (the lion head: genus 8 for a disc, where the
+// input's density varies 20x and rho was raised for its sparse parts above the reach of its
+// thin ones), the reconstruction runs again with adaptive rho, which is small where the
+// surface is thin and large where it is sparse, and the run with fewer extra handles is kept.
+struct AdaptiveRetry {
+  long input_genus = 0;
+  std::optional<long> uniform_genus, adaptive_genus;
+  bool kept_adaptive = false;
+  [[nodiscard]] std::string describe() const {
+    auto text = [](const std::optional<long>& g) { return g ? std::to_string(*g) : std::string("undefined"); };
+    return "rho: the uniform run has genus " + text(uniform_genus) + " where the input mesh has " +
+           std::to_string(input_genus) + "; with --rho-adaptive genus " + text(adaptive_genus) + ", " +
+           (kept_adaptive ? "kept" : "not kept") + " (--no-adaptive-retry: keep the uniform run)";
+  }
+};
+
+std::optional<AdaptiveRetry> retry_with_adaptive_rho(ReconstructCommand& cmd, const LoadedSurface& loaded,
+                                                     pipeline::ReconstructResult& result, const Progress& progress) {
+  auto& options = cmd.options;
+  if (cmd.no_adaptive_retry || !loaded.genus || cmd.rho != "auto" ||
+      options.envelope.rho_mode != envelope::RhoMode::Uniform || options.method != pipeline::Method::Envelope ||
+      options.extraction != pipeline::Extraction::Sheet || result.mesh.triangles.empty())
+    return std::nullopt;
+  AdaptiveRetry retry;
+  retry.input_genus = *loaded.genus;
+  retry.uniform_genus = topology::total_genus(topology::analyze_topology(result.mesh));
+  if (retry.uniform_genus && *retry.uniform_genus <= retry.input_genus) return std::nullopt;
+  auto adaptive_options = options;
+  adaptive_options.envelope.rho_mode = envelope::RhoMode::Adaptive;
+  auto adaptive = pipeline::reconstruct(loaded.samples, adaptive_options, progress);
+  if (!adaptive.mesh.triangles.empty())
+    retry.adaptive_genus = topology::total_genus(topology::analyze_topology(adaptive.mesh));
+  // Kept when its genus is defined and lower than the uniform run's (or that one's is not).
+  retry.kept_adaptive = retry.adaptive_genus && (!retry.uniform_genus || *retry.adaptive_genus < *retry.uniform_genus);
+  if (retry.kept_adaptive) {
+    adaptive.seconds.envelope += result.seconds.envelope;
+    adaptive.seconds.extraction += result.seconds.extraction;
+    adaptive.seconds.remesh += result.seconds.remesh;
+    result = std::move(adaptive);
+    options = adaptive_options;
+  }
+  return retry;
+}
+
 // Outputs checked before the run, not after minutes of it: known extensions, existing folders.
 void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   io::check_output_path(cmd.output, output_kind);
@@ -260,7 +306,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
-  const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
+  auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
+  const std::optional<AdaptiveRetry> retry = retry_with_adaptive_rho(cmd, loaded, result, progress);
   if (result.mesh.triangles.empty()) {
     const auto& e = result.envelope;
     std::ostringstream reason;
@@ -301,6 +348,14 @@ void run_reconstruct(ReconstructCommand& cmd) {
   j["seconds"] = {{"envelope", result.seconds.envelope}, {"power_crust", result.seconds.power_crust},
                   {"extraction", result.seconds.extraction}, {"remesh", result.seconds.remesh}};
   if (loaded.is_orientable) j["input_is_orientable"] = *loaded.is_orientable;
+  if (loaded.genus) j["input_genus"] = *loaded.genus;
+  if (retry) {
+    auto genus = [](const std::optional<long>& g) { return g ? nlohmann::json(*g) : nlohmann::json(nullptr); };
+    j["adaptive_retry"] = {{"input_genus", retry->input_genus},
+                           {"uniform_genus", genus(retry->uniform_genus)},
+                           {"adaptive_genus", genus(retry->adaptive_genus)},
+                           {"kept", retry->kept_adaptive ? "adaptive" : "uniform"}};
+  }
   if (!loaded.detected_loop_widths.empty()) j["input_boundary_widths"] = loaded.detected_loop_widths;
   if (result.sheet_stats) {
     const auto& s = *result.sheet_stats;
@@ -391,6 +446,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << (result.envelope.local_rho.empty() ? "" : ", at least " + std::to_string(result.envelope.rho_min))
               << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size()
               << " samples\n";
+  if (retry)
+    std::cout << "  " << retry->describe() << "\n";
   // The stages that ran (the sheet runs its own Delaunay triangulation, no power crust).
   std::cout << "  time:";
   const char* separator = " ";
@@ -501,6 +558,9 @@ void register_reconstruct(CLI::App& app) {
   sub->add_option("-r,--reference", cmd->reference,
                   "Reference for distances (default: the exact surface for builtin inputs, else the input points)");
   sub->add_flag("--no-analysis", cmd->no_analysis, "Skip the analysis of the output");
+  sub->add_flag("--no-adaptive-retry", cmd->no_adaptive_retry,
+                "Mesh input: keep the uniform-rho run even when it has more handles than the input mesh "
+                "(by default the reconstruction then runs again with --rho-adaptive and keeps the run with fewer)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_reconstruct(*cmd); });

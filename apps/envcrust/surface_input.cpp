@@ -33,7 +33,9 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
   } catch (const InvalidInput& e) {
     throw InvalidInput(spec + ": " + e.what());
   }
-  out.is_orientable = topology::analyze_topology(mesh).is_orientable;  // a manifold, checked above
+  const auto mesh_topology = topology::analyze_topology(mesh);  // a manifold, checked above
+  out.is_orientable = mesh_topology.is_orientable;
+  out.genus = topology::total_genus(mesh_topology);
   std::vector<bool> used(mesh.vertices.size(), false);
   for (const auto& t : mesh.triangles)
     for (Index v : t) used[v] = true;

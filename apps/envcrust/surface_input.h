@@ -34,6 +34,9 @@ struct LoadedSurface {
   /// Whether the input itself is orientable, where it says: a mesh (every component
   /// orientable); unknown for point files and built-in samples.
   std::optional<bool> is_orientable;
+  /// A mesh input: its genus, summed over components (handles and cross-caps). The envelope
+  /// should not add any (reconstruct retries with adaptive rho when it does).
+  std::optional<long> genus;
   /// Point files whose boundary was detected: each curve's width in local spacings
   /// (BoundaryDetection::loop_widths), and the --boundary-min-width the detection used.
   std::vector<double> detected_loop_widths;

@@ -58,6 +58,10 @@ struct MeshTopology {
   [[nodiscard]] bool is_closed() const { return boundary_edges == 0; }
 };
 
+/// Handles and cross-caps of the whole mesh: the components' genus summed; unset when a
+/// component is not a manifold.
+std::optional<long> total_genus(const MeshTopology& topology);
+
 /// Options of analyze_topology.
 struct TopologyOptions {
   /// Merge vertices with identical coordinates first (files often repeat them, e.g. STL and

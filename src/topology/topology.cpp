@@ -141,6 +141,15 @@ MeshTopology analyze_topology(const TriangleMesh& input, const TopologyOptions& 
   return out;
 }
 
+std::optional<long> total_genus(const MeshTopology& topology) {
+  long sum = 0;
+  for (const auto& c : topology.components) {
+    if (!c.genus) return std::nullopt;
+    sum += *c.genus;
+  }
+  return sum;
+}
+
 std::vector<BoundaryLoop> boundary_loops(const TriangleMesh& mesh) {
   check_indices(mesh);
   std::vector<std::array<Index, 3>> faces;

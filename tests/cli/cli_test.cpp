@@ -499,6 +499,9 @@ TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
   const auto j = run_envcrust_json("reconstruct " + path("c.off") + " -r builtin:cylinder -o " + path("c.ply") +
                                    " --json");
   EXPECT_EQ(j["input_is_orientable"], true);
+  // The result has the input's genus (0): no second run with adaptive rho.
+  EXPECT_EQ(j["input_genus"], 0);
+  EXPECT_FALSE(j.contains("adaptive_retry"));
   EXPECT_EQ(j["sheet"]["cut_to_orientable"], true);
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
   EXPECT_EQ(j["sheet"]["orientation_seams"], 0);

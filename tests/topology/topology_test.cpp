@@ -174,6 +174,27 @@ TEST(Topology, three_faces_on_an_edge_make_it_non_manifold) {
   EXPECT_FALSE(t2.components[0].genus.has_value());
 }
 
+TEST(Topology, total_genus_sums_handles_and_cross_caps_over_components) {
+  // A torus (1 handle), a Moebius strip (1 cross-cap) and a disc, side by side.
+  TriangleMesh m = fixtures::torus();
+  for (const auto& part : {fixtures::moebius(40, 4), fixtures::square(3)}) {
+    const auto offset = static_cast<Index>(m.vertices.size());
+    for (const auto& p : part.vertices) m.vertices.push_back(Point3(p.x() + 10 * offset, p.y(), p.z()));
+    for (const auto& t : part.triangles) m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  const auto t = analyze_topology(m);
+  ASSERT_EQ(t.components.size(), 3u);
+  EXPECT_EQ(topology::total_genus(t), 2);
+  EXPECT_EQ(topology::total_genus(analyze_topology(fixtures::square(3))), 0);
+  // Unset when a component is no manifold (its genus is undefined).
+  auto fin = fixtures::square(2);
+  for (double z : {1.0, -1.0}) {
+    fin.vertices.push_back({0.25, 0, z});
+    fin.triangles.push_back({0, 1, Index(fin.vertices.size() - 1)});
+  }
+  EXPECT_FALSE(topology::total_genus(analyze_topology(fin)).has_value());
+}
+
 TEST(Topology, two_disks_touching_at_a_vertex_make_it_non_manifold) {
   TriangleMesh m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}};
