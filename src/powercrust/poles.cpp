@@ -14,9 +14,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <limits>
-#include <cmath>
 #include <memory>
 #include <numeric>
 
@@ -136,10 +136,12 @@ class SampleLocks {
 // side of p+. Each circumcentre is computed once per pass: storing them (24 bytes x 20 cells
 // per sample on an exact torus) was the stage's peak memory, and collecting each sample's
 // cells cost a hash-set walk per sample.
-std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vector<double>& nearest) {
+// With `nearest`, also each sample's distance to its nearest other sample (a Delaunay
+// neighbour) in the same pass.
+std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vector<double>* nearest) {
   SampleLocks locks(n);
   std::vector<Candidate> outer(n);
-  nearest.assign(n, std::numeric_limits<double>::infinity());
+  if (nearest) nearest->assign(n, std::numeric_limits<double>::infinity());
   parallel_for_each_finite_cell(dt, [&](Cell c) {
     const Point3 centre = circumcentre(c);
     for (int j = 0; j < 4; ++j) {
@@ -147,16 +149,18 @@ std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vec
       if (v->info() >= n) continue;  // a bounding corner
       const double d = CGAL::squared_distance(centre, v->point());
       double edge = std::numeric_limits<double>::infinity();
-      for (int k = 0; k < 4; ++k)
-        if (k != j && c->vertex(k)->info() < n)
-          edge = std::min(edge, CGAL::squared_distance(v->point(), c->vertex(k)->point()));
+      if (nearest)
+        for (int k = 0; k < 4; ++k)
+          if (k != j && c->vertex(k)->info() < n)
+            edge = std::min(edge, CGAL::squared_distance(v->point(), c->vertex(k)->point()));
       locks.with(v->info(), [&] {
         if (ranks_above(d, centre, c, outer[v->info()])) outer[v->info()] = {d, c};
-        nearest[v->info()] = std::min(nearest[v->info()], edge);
+        if (nearest) (*nearest)[v->info()] = std::min((*nearest)[v->info()], edge);
       });
     }
   });
-  for (double& d : nearest) d = std::sqrt(d);
+  if (nearest)
+    for (double& d : *nearest) d = std::sqrt(d);
   std::vector<PoleChoice> chosen(n);
   parallel_indices(n, [&](std::size_t i) {
     chosen[i].cells[0] = cell_address(outer[i].cell);
@@ -323,7 +327,7 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
   PoleStage out;
   out.finite_cells = dt->number_of_finite_cells();
   std::vector<double> nearest;
-  std::vector<PoleChoice> chosen = choose_poles(*dt, n, nearest);
+  std::vector<PoleChoice> chosen = choose_poles(*dt, n, local_spacing ? &nearest : nullptr);
   if (local_spacing) out.local_spacing = median_neighbour_spacing(*dt, nearest);
   // The triangulation is the largest object of the run: free it as soon as the poles are
   // chosen (the power diagram comes next, and the two are never held together, METHOD 4.11).
