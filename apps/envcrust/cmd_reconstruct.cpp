@@ -241,49 +241,18 @@ void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   sheet.cut_handles_rel_rho = 0;
 }
 
-// A mesh input knows its own topology. When the automatic uniform rho gives the sheet more
-// handles or cross-caps than the input mesh has (the lion head: genus 8 for a disc, where the
-// input's density varies 20x and rho was raised for its sparse parts above the reach of its
-// thin ones), the reconstruction runs again with adaptive rho, which is small where the
-// surface is thin and large where it is sparse, and the run with fewer extra handles is kept.
-struct AdaptiveRetry {
-  long input_genus = 0;
-  std::optional<long> uniform_genus, adaptive_genus;
-  bool kept_adaptive = false;
-  [[nodiscard]] std::string describe() const {
-    auto text = [](const std::optional<long>& g) { return g ? std::to_string(*g) : std::string("undefined"); };
-    return "rho: the uniform run has genus " + text(uniform_genus) + " where the input mesh has " +
-           std::to_string(input_genus) + "; with --rho-adaptive genus " + text(adaptive_genus) + ", " +
-           (kept_adaptive ? "kept" : "not kept") + " (--no-adaptive-retry: keep the uniform run)";
-  }
-};
+// A mesh input knows its own genus: the reconstruction may not add handles or cross-caps
+// (ReconstructOptions::max_genus; the lion head: genus 8 for a disc with the uniform rho).
+// Not when rho or its mode was given, or with --no-adaptive-retry.
+void bound_genus_by_input(ReconstructCommand& cmd, const LoadedSurface& loaded) {
+  if (!cmd.no_adaptive_retry && loaded.genus && cmd.rho == "auto") cmd.options.max_genus = loaded.genus;
+}
 
-std::optional<AdaptiveRetry> retry_with_adaptive_rho(ReconstructCommand& cmd, const LoadedSurface& loaded,
-                                                     pipeline::ReconstructResult& result, const Progress& progress) {
-  auto& options = cmd.options;
-  if (cmd.no_adaptive_retry || !loaded.genus || cmd.rho != "auto" ||
-      options.envelope.rho_mode != envelope::RhoMode::Uniform || options.method != pipeline::Method::Envelope ||
-      options.extraction != pipeline::Extraction::Sheet || result.mesh.triangles.empty())
-    return std::nullopt;
-  AdaptiveRetry retry;
-  retry.input_genus = *loaded.genus;
-  retry.uniform_genus = topology::total_genus(topology::analyze_topology(result.mesh));
-  if (retry.uniform_genus && *retry.uniform_genus <= retry.input_genus) return std::nullopt;
-  auto adaptive_options = options;
-  adaptive_options.envelope.rho_mode = envelope::RhoMode::Adaptive;
-  auto adaptive = pipeline::reconstruct(loaded.samples, adaptive_options, progress);
-  if (!adaptive.mesh.triangles.empty())
-    retry.adaptive_genus = topology::total_genus(topology::analyze_topology(adaptive.mesh));
-  // Kept when its genus is defined and lower than the uniform run's (or that one's is not).
-  retry.kept_adaptive = retry.adaptive_genus && (!retry.uniform_genus || *retry.adaptive_genus < *retry.uniform_genus);
-  if (retry.kept_adaptive) {
-    adaptive.seconds.envelope += result.seconds.envelope;
-    adaptive.seconds.extraction += result.seconds.extraction;
-    adaptive.seconds.remesh += result.seconds.remesh;
-    result = std::move(adaptive);
-    options = adaptive_options;
-  }
-  return retry;
+std::string describe(const pipeline::AdaptiveRetry& retry) {
+  auto text = [](const std::optional<long>& g) { return g ? std::to_string(*g) : std::string("undefined"); };
+  return "rho: the uniform run has genus " + text(retry.uniform_genus) + " where the input mesh has " +
+         std::to_string(retry.max_genus) + "; with --rho-adaptive genus " + text(retry.adaptive_genus) + ", " +
+         (retry.kept_adaptive ? "kept" : "not kept") + " (--no-adaptive-retry: keep the uniform run)";
 }
 
 // Outputs checked before the run, not after minutes of it: known extensions, existing folders.
@@ -306,8 +275,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
-  auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
-  const std::optional<AdaptiveRetry> retry = retry_with_adaptive_rho(cmd, loaded, result, progress);
+  bound_genus_by_input(cmd, loaded);
+  const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
+  const auto& retry = result.adaptive_retry;
   if (result.mesh.triangles.empty()) {
     const auto& e = result.envelope;
     std::ostringstream reason;
@@ -351,7 +321,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (loaded.genus) j["input_genus"] = *loaded.genus;
   if (retry) {
     auto genus = [](const std::optional<long>& g) { return g ? nlohmann::json(*g) : nlohmann::json(nullptr); };
-    j["adaptive_retry"] = {{"input_genus", retry->input_genus},
+    j["adaptive_retry"] = {{"input_genus", retry->max_genus},
                            {"uniform_genus", genus(retry->uniform_genus)},
                            {"adaptive_genus", genus(retry->adaptive_genus)},
                            {"kept", retry->kept_adaptive ? "adaptive" : "uniform"}};
@@ -447,7 +417,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size()
               << " samples\n";
   if (retry)
-    std::cout << "  " << retry->describe() << "\n";
+    std::cout << "  " << describe(*retry) << "\n";
   // The stages that ran (the sheet runs its own Delaunay triangulation, no power crust).
   std::cout << "  time:";
   const char* separator = " ";

@@ -40,6 +40,18 @@ struct ReconstructOptions {
   /// non-orientable result is cut along a seam and welded back; skipped with a warning for
   /// non-manifold results). nullopt: no remeshing.
   std::optional<remesh::RemeshOptions> remesh;
+  /// The genus M is known to have at most (a mesh input's own: handles and cross-caps summed
+  /// over components). When a uniform-rho envelope run gives the sheet more, it runs again
+  /// with adaptive rho (small where M is thin, large where it is sparse) and the run with the
+  /// lower genus is kept (ReconstructResult::adaptive_retry). nullopt: no check.
+  std::optional<long> max_genus;
+};
+
+/// What the max_genus check did.
+struct AdaptiveRetry {
+  long max_genus = 0;
+  std::optional<long> uniform_genus, adaptive_genus;  ///< unset: not a manifold (or empty)
+  bool kept_adaptive = false;
 };
 
 /// Seconds spent per stage.
@@ -55,11 +67,13 @@ struct ReconstructResult {
   std::optional<powercrust::PowerCrustStats> power_crust_stats;
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
+  std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the max_genus check reran
   StageTimes seconds;
   std::vector<std::string> warnings;
 };
 
-/// Reconstruct M from its samples (points with normal lines and boundary curves).
+/// Reconstruct M from its samples (points with normal lines and boundary curves): one run,
+/// a second with adaptive rho if the first exceeds options.max_genus, then the remeshing.
 /// @throws InvalidInput, DegenerateInput, InvalidOptions from the stages.
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options = {}, const Progress& progress = {});

@@ -1,6 +1,8 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
+#include "envcrust/topology.h"
+
 
 namespace envcrust::pipeline {
 namespace {
@@ -27,8 +29,11 @@ TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
   return mesh;
 }
 
-ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
-                              const ReconstructOptions& options, const Progress& progress) {
+namespace {
+
+// One run of the stages, without the max_genus check and the remeshing.
+ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, const ReconstructOptions& options,
+                                   const Progress& progress) {
   ReconstructResult out;
   if (options.method == Method::PowerCrust) {
     progress.report("power crust", 0.0);
@@ -41,7 +46,6 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     out.power_crust_stats = pc.stats;
     out.warnings = std::move(pc.warnings);
     progress.report("power crust", 1.0);
-    remesh_result(out, options.remesh, progress);
     return out;
   }
 
@@ -76,6 +80,40 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     out.sheet_stats = sheet.stats;
     for (auto& w : sheet.warnings) out.warnings.push_back(std::move(w));
     progress.report("medial sheet", 1.0);
+  }
+  return out;
+}
+
+std::optional<long> genus_of(const TriangleMesh& mesh) {
+  if (mesh.triangles.empty()) return std::nullopt;
+  return topology::total_genus(topology::analyze_topology(mesh));
+}
+
+}  // namespace
+
+ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
+                              const ReconstructOptions& options, const Progress& progress) {
+  ReconstructOptions once = options;
+  once.remesh.reset();
+  ReconstructResult out = reconstruct_once(samples, once, progress);
+  if (options.max_genus && options.method == Method::Envelope && options.extraction == Extraction::Sheet &&
+      options.envelope.rho_mode == envelope::RhoMode::Uniform && !out.mesh.triangles.empty()) {
+    AdaptiveRetry retry;
+    retry.max_genus = *options.max_genus;
+    retry.uniform_genus = genus_of(out.mesh);
+    if (!retry.uniform_genus || *retry.uniform_genus > retry.max_genus) {
+      once.envelope.rho_mode = envelope::RhoMode::Adaptive;
+      ReconstructResult adaptive = reconstruct_once(samples, once, progress);
+      retry.adaptive_genus = genus_of(adaptive.mesh);
+      retry.kept_adaptive =
+          retry.adaptive_genus && (!retry.uniform_genus || *retry.adaptive_genus < *retry.uniform_genus);
+      if (retry.kept_adaptive) {
+        adaptive.seconds.envelope += out.seconds.envelope;
+        adaptive.seconds.extraction += out.seconds.extraction;
+        out = std::move(adaptive);
+      }
+      out.adaptive_retry = retry;
+    }
   }
   remesh_result(out, options.remesh, progress);
   return out;
