@@ -71,8 +71,26 @@ struct Centreline {
   double end_gap = 0.0;    ///< distance between the ends of the ordered diameter path
   double length = 0.0;     ///< length of the closed centreline
   double open_length = 0.0;  ///< its length without the closing segment (last to first)
-  double join_gap = 0.0;     ///< made of two open arcs: the longer of the two joins, else 0
+  double join_gap = 0.0;     ///< made of open arcs: the longest of the joins, else 0
+  std::size_t joined_arcs = 0;  ///< made of open arcs: how many, else 0
 };
+
+/// Bounds of join_open_arcs, absolute lengths.
+struct ArcJoinLimits {
+  double close_gap = 0.0;       ///< an arc is open if its ends are farther apart than this
+  double min_arc = 0.0;         ///< shorter open arcs are not joined (false-candidate chains)
+  double max_join = 0.0;        ///< a join may be this long anywhere ...
+  double max_join_local = 0.0;  ///< ... or this many local spacings (6th-neighbour distance)
+};
+
+/// Open arcs (ordered bands whose ends stay apart, such as the flagged pieces of a sparsely
+/// sampled rim or the two sides of a slot whose tight ends went unflagged) joined end to end
+/// into closed loops: ends matched greedily, shortest join first, each join within the
+/// limits; a cycle of arcs becomes one loop (merged into its first arc) if its joins are
+/// shorter in all than its arcs' own closing gaps. Returns the number of loops made
+/// (arc_joining.cpp).
+std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, std::vector<Centreline>& lines,
+                           const std::vector<Point3>& points, const PointIndex& index, const ArcJoinLimits& limits);
 
 /// Order a component along the diameter path of its linking-graph MST, then replace the path
 /// by averages of all component points binned by their arc-length position (curve_linking.cpp).

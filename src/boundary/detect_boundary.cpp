@@ -6,6 +6,8 @@
 #include "envcrust/normals.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <sstream>
 
 namespace envcrust::boundary {
@@ -25,12 +27,20 @@ using detail::format_number;
 
 // Seed spacing of band_cycle, in spacings s: the flagged band is 1-2 s wide.
 constexpr double kBandSeedSpacing = 4.0;
-// Longest join between two open arcs made into one loop, in s: a slot a few spacings wide
-// whose tight ends went unflagged (the bunny's long base slot: 4.6 s).
+// Longest join between open arcs made into one loop, in s: a slot a few spacings wide whose
+// tight ends went unflagged (the bunny's long base slot: 4.6 s) ...
 constexpr double kMaxArcJoin = 10.0;
+// ... or in local spacings (6th-neighbour distance at the arc ends) where the rim is sampled
+// more sparsely than the average: the lion head's neck rim came in four arcs 2-4 local
+// spacings (11-19 s) apart.
+constexpr double kMaxArcJoinLocal = 5.0;
 // Shortest arc joined, as a fraction of min_loop_length: false-candidate chains around random
 // voids reach 10 s at 50k points (two of them were joined into a false loop on the saddle).
 constexpr double kMinJoinedArc = 0.6;
+// Normal lines within 30 degrees of a loop's plane: the sheet the loop would be a hole in.
+constexpr double kSameSheetCos = 0.866;
+// An outer rim: conormals on average within 60 degrees of pointing away from its centroid.
+constexpr double kOuterRimCos = 0.5;
 
 void require(bool ok, const std::string& field, double value, const std::string& range) {
   if (!ok) {
@@ -63,6 +73,8 @@ void validate(const BoundaryOptions& o) {
             *o.curve_spacing, "> 0");
   }
   require(o.min_loop_width >= 0 && std::isfinite(o.min_loop_width), "min_loop_width", o.min_loop_width, ">= 0");
+  require(o.max_sampled_beyond >= 0 && o.max_sampled_beyond <= 1, "max_sampled_beyond", o.max_sampled_beyond,
+          "in [0, 1]");
   require(o.outward_offset >= -5 && o.outward_offset <= 5, "outward_offset", o.outward_offset,
           "in [-5, 5]");
 }
@@ -87,6 +99,12 @@ std::vector<Vector3> unit_normals(const std::vector<Point3>& points,
     out.push_back(normal_lines[i] / len);
   }
   return out;
+}
+
+double closed_length(const Polyline& curve) {
+  double length = 0.0;
+  for (std::size_t i = 0; i < curve.size(); ++i) length += detail::length(curve[(i + 1) % curve.size()] - curve[i]);
+  return length;
 }
 
 // 4 area / perimeter of a closed polyline (area = norm of its vector area): a disc's
@@ -116,6 +134,42 @@ double local_spacing(const std::vector<Point3>& points, const detail::PointIndex
   const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
   std::nth_element(d.begin(), mid, d.end());
   return *mid;
+}
+
+// How much of an outer rim has the same sheet going on beyond it: 0 for a loop whose
+// conormals point on average into it (a hole: on average within 60 degrees of its centroid;
+// across a hole or a slot nothing tells a hole from a gap in the sampling), else the fraction
+// of its vertices where a ball of radius w/4 centred w/2 out along the conormal (w = the
+// loop's width, 4 area / perimeter) holds an input point other than the loop's own, within
+// w/8 of the vertex's tangent plane and with a normal line within 30 degrees of the vertex's.
+// Beyond the outer rim of a surface nothing lies there; beyond the rim of a patch sampled
+// more densely than its surroundings (whose nearest neighbours all lie on the dense side, so
+// the angle-gap test flags it) lie the sparse samples.
+double sheet_beyond_fraction(const BoundaryCurve& curve, const std::vector<Point3>& points,
+                             const std::vector<Vector3>& normals, const detail::PointIndex& index,
+                             const std::vector<std::size_t>& component) {
+  const std::size_t m = curve.vertices.size();
+  const Polyline loop = curve.polyline();
+  const double w = loop_width(loop);
+  if (m < 3 || !(w > 0)) return 0.0;
+  Vector3 sum(0, 0, 0);
+  for (const Point3& p : loop) sum = sum + (p - CGAL::ORIGIN);
+  const Point3 centre = CGAL::ORIGIN + sum / static_cast<double>(m);
+  double inward = 0.0;
+  for (const BoundaryVertex& v : curve.vertices) inward += detail::dot(v.conormal, detail::unit(centre - v.position));
+  if (inward > -kOuterRimCos * static_cast<double>(m)) return 0.0;
+  std::size_t sampled = 0;
+  for (const BoundaryVertex& v : curve.vertices) {
+    for (const std::size_t i : index.within(v.position + 0.5 * w * v.conormal, 0.25 * w)) {
+      if (std::abs(detail::dot(points[i] - v.position, v.normal)) < 0.125 * w &&
+          std::abs(detail::dot(normals[i], v.normal)) > kSameSheetCos &&
+          !std::binary_search(component.begin(), component.end(), i)) {
+        ++sampled;
+        break;
+      }
+    }
+  }
+  return static_cast<double>(sampled) / static_cast<double>(m);
 }
 
 // Turns each component of flagged candidates, with its ordered centreline, into a closed,
@@ -158,23 +212,34 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
       continue;
     }
     const std::size_t id = out.curves.size();
-    if (line.join_gap > 0) {
-      out.warnings.push_back("curve " + std::to_string(id) +
-                             ": two open arcs joined into one loop across gaps of up to " +
-                             format_number(line.join_gap / s) +
-                             " spacings (the hole's thin ends went undetected)");
+    std::vector<std::string> notes;
+    if (line.joined_arcs > 0) {
+      notes.push_back("curve " + std::to_string(id) + ": " + std::to_string(line.joined_arcs) +
+                      " open arcs joined into one loop across gaps of up to " + format_number(line.join_gap / s) +
+                      " spacings (parts of the rim went unflagged)");
     } else if (line.end_gap > options.close_distance * s) {
-      out.warnings.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
-                             format_number(line.end_gap / s) +
-                             " spacings apart; closed across the gap");
+      notes.push_back("curve " + std::to_string(id) + ": the ordered path's ends are " +
+                      format_number(line.end_gap / s) + " spacings apart; closed across the gap");
     }
-    BoundaryCurve framed = detail::frame_curve(curve, points, normals, index, candidates,
-                                               component, id, out.warnings);
+    BoundaryCurve framed = detail::frame_curve(curve, points, normals, index, candidates, component, id, notes);
+    const double beyond = sheet_beyond_fraction(framed, points, normals, index, component);
+    if (drop_small && beyond > options.max_sampled_beyond) {
+      ++out.dropped_loops;
+      const Point3& p = framed.vertices.front().position;
+      out.warnings.push_back("a loop of length " + format_number(closed_length(framed.polyline())) +
+                             " near (" + format_number(p.x()) + ", " + format_number(p.y()) + ", " +
+                             format_number(p.z()) + ") dropped: its conormals point out of it, but beyond " +
+                             format_number(std::round(100 * beyond)) +
+                             "% of it the surface goes on (the rim of a densely sampled patch, not a boundary)");
+      continue;
+    }
+    for (auto& note : notes) out.warnings.push_back(std::move(note));
     if (options.outward_offset != 0) {
       for (BoundaryVertex& v : framed.vertices) {
         v.position = v.position + options.outward_offset * s * v.conormal;
       }
     }
+    out.sampled_beyond.push_back(beyond);
     out.curves.push_back(std::move(framed));
     out.loop_widths.push_back(width);
     for (const std::size_t i : component) {
@@ -192,72 +257,6 @@ Vector3 centroid_conormal(const std::vector<Point3>& points, const Vector3& n,
   for (const std::size_t j : neighbors)
     if (j != self) sum = sum + (points[j] - points[self]);
   return detail::unit_perpendicular(-sum, n);
-}
-
-// Pairs of open arcs (ordered bands whose ends stay more than `close_gap` apart, such as the
-// two flagged sides of a slot whose tight ends went unflagged) joined end to end into one
-// loop, when both joins are shorter than `max_join` and together shorter than the two arcs'
-// own closing gaps, and both arcs at least `min_arc` long (chains of false candidates around
-// random voids stay shorter). Greedy, shortest joins first; joined components are merged
-// into the first. Returns the number of joins made.
-std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components,
-                           std::vector<detail::Centreline>& lines, double close_gap, double max_join,
-                           double min_arc) {
-  struct Join {
-    double cost;
-    std::size_t a, b;
-    bool reverse_b;
-  };
-  auto dist = [](const Point3& p, const Point3& q) { return std::sqrt(CGAL::squared_distance(p, q)); };
-  std::vector<Join> joins;
-  for (std::size_t a = 0; a < lines.size(); ++a) {
-    if (lines[a].end_gap <= close_gap || lines[a].open_length < min_arc) continue;
-    for (std::size_t b = a + 1; b < lines.size(); ++b) {
-      if (lines[b].end_gap <= close_gap || lines[b].open_length < min_arc) continue;
-      const Polyline &pa = lines[a].points, &pb = lines[b].points;
-      for (const bool reverse : {false, true}) {
-        const Point3& b_first = reverse ? pb.back() : pb.front();
-        const Point3& b_last = reverse ? pb.front() : pb.back();
-        const double j1 = dist(pa.back(), b_first), j2 = dist(b_last, pa.front());
-        if (j1 < max_join && j2 < max_join && j1 + j2 < lines[a].end_gap + lines[b].end_gap)
-          joins.push_back({j1 + j2, a, b, reverse});
-      }
-    }
-  }
-  std::sort(joins.begin(), joins.end(), [](const Join& x, const Join& y) { return x.cost < y.cost; });
-  std::vector<char> used(lines.size(), 0), absorbed(lines.size(), 0);
-  std::size_t made = 0;
-  for (const Join& j : joins) {
-    if (used[j.a] || used[j.b]) continue;
-    used[j.a] = used[j.b] = 1;
-    absorbed[j.b] = 1;
-    Polyline& pa = lines[j.a].points;
-    Polyline pb = lines[j.b].points;
-    if (j.reverse_b) std::reverse(pb.begin(), pb.end());
-    const double join_in = dist(pa.back(), pb.front());
-    pa.insert(pa.end(), pb.begin(), pb.end());
-    detail::Centreline& line = lines[j.a];
-    line.end_gap = dist(pa.back(), pa.front());
-    line.join_gap = std::max(join_in, line.end_gap);
-    line.length = 0;
-    for (std::size_t k = 0; k < pa.size(); ++k) line.length += dist(pa[k], pa[(k + 1) % pa.size()]);
-    line.open_length = line.length - dist(pa.back(), pa.front());
-    components[j.a].insert(components[j.a].end(), components[j.b].begin(), components[j.b].end());
-    std::sort(components[j.a].begin(), components[j.a].end());
-    ++made;
-  }
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    if (absorbed[k]) continue;
-    if (kept != k) {
-      lines[kept] = std::move(lines[k]);
-      components[kept] = std::move(components[k]);
-    }
-    ++kept;
-  }
-  lines.resize(kept);
-  components.resize(kept);
-  return made;
 }
 
 // Checked options and unit normals of a cloud with enough points for the neighbour queries.
@@ -309,7 +308,11 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points,
     }
     lines.push_back(std::move(line));
   }
-  join_open_arcs(components, lines, options.close_distance * s, kMaxArcJoin * s, kMinJoinedArc * options.min_loop_length * s);
+  detail::join_open_arcs(components, lines, points, index,
+                         {.close_gap = options.close_distance * s,
+                          .min_arc = kMinJoinedArc * options.min_loop_length * s,
+                          .max_join = kMaxArcJoin * s,
+                          .max_join_local = kMaxArcJoinLocal});
   build_curves(points, normals, index, candidates, options, components, lines, true, out);
   return out;
 }

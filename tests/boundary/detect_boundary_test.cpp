@@ -167,6 +167,9 @@ TEST(DetectBoundary, RejectsBadOptions) {
   o = {};
   o.outward_offset = 7;
   expect_options_error(o, "boundary detection: outward_offset must be in [-5, 5] (got 7)");
+  o = {};
+  o.max_sampled_beyond = 1.5;
+  expect_options_error(o, "boundary detection: max_sampled_beyond must be in [0, 1] (got 1.5)");
 }
 
 TEST(DetectBoundary, RejectsBadInput) {
@@ -262,7 +265,7 @@ TEST(DetectBoundary, LensHoleWithUnflaggedTipsIsOneLoop) {
   const auto result = boundary::detect_boundary(points, normals);
   ASSERT_EQ(result.curves.size(), 2u);
   ASSERT_EQ(result.warnings.size(), 1u);
-  EXPECT_NE(result.warnings[0].find(": two open arcs joined into one loop across gaps of up to "), std::string::npos)
+  EXPECT_NE(result.warnings[0].find(": 2 open arcs joined into one loop across gaps of up to "), std::string::npos)
       << result.warnings[0];
   // One curve is the lens: inside the square's margin, spanning most of its length.
   std::size_t lenses = 0;
@@ -280,5 +283,65 @@ TEST(DetectBoundary, LensHoleWithUnflaggedTipsIsOneLoop) {
   EXPECT_EQ(lenses, 1u);
 }
 
+
+// A unit square sampled at random (seed 9, 8k points) with a round hole of radius 0.1 at
+// (0.7, 0.5) and, at (0.3, 0.5), a disc of radius 0.1 sampled 10 times more densely (the
+// lion head scan has such patches). The angle-gap test flags the dense patch's rim too (its
+// nearest neighbours lie on the dense side); the sparse samples around it tell it from a hole.
+TEST(DetectBoundary, DensePatchRimIsNoBoundaryButAHoleIs) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point3> points;
+  while (points.size() < 8000) {
+    const double x = u(rng), y = u(rng);
+    if (std::hypot(x - 0.7, y - 0.5) < 0.1) continue;
+    if (std::hypot(x - 0.3, y - 0.5) < 0.1) {
+      for (int k = 0; k < 10; ++k) {
+        const double r = 0.1 * std::sqrt(u(rng)), a = 2 * M_PI * u(rng);
+        points.emplace_back(0.3 + r * std::cos(a), 0.5 + r * std::sin(a), 0.0);
+      }
+      continue;
+    }
+    points.emplace_back(x, y, 0.0);
+  }
+  const std::vector<Vector3> normals(points.size(), Vector3(0, 0, 1));
+  auto centre_x = [](const BoundaryCurve& c) {
+    double x = 0;
+    for (const BoundaryVertex& v : c.vertices) x += v.position.x();
+    return x / static_cast<double>(c.vertices.size());
+  };
+  boundary::BoundaryOptions keep_all;
+  keep_all.max_sampled_beyond = 1.0;
+  const auto all = boundary::detect_boundary(points, normals, keep_all);
+  // Outline, hole and the dense patch's rim, each with the fraction the option compares with.
+  ASSERT_EQ(all.curves.size(), 3u);
+  ASSERT_EQ(all.sampled_beyond.size(), 3u);
+  std::size_t patch = 3, hole = 3, outline = 3;
+  for (std::size_t c = 0; c < 3; ++c) {
+    double xmin = 1;
+    for (const BoundaryVertex& v : all.curves[c].vertices) xmin = std::min(xmin, v.position.x());
+    if (xmin < 0.1) outline = c;
+    else if (centre_x(all.curves[c]) < 0.5) patch = c;
+    else hole = c;
+  }
+  ASSERT_TRUE(patch < 3 && hole < 3 && outline < 3);
+  std::cout << "sampled beyond: outline " << all.sampled_beyond[outline] << ", hole " << all.sampled_beyond[hole]
+            << ", dense patch " << all.sampled_beyond[patch] << "\n";
+  EXPECT_LT(all.sampled_beyond[outline], 0.05);
+  EXPECT_LT(all.sampled_beyond[hole], 0.05);
+  EXPECT_GT(all.sampled_beyond[patch], 0.5);
+
+  const auto result = boundary::detect_boundary(points, normals);
+  ASSERT_EQ(result.curves.size(), 2u);
+  EXPECT_EQ(result.dropped_loops, all.dropped_loops + 1);
+  for (const BoundaryCurve& c : result.curves) EXPECT_FALSE(std::abs(centre_x(c) - 0.3) < 0.05);
+  const auto dropped = std::find_if(result.warnings.begin(), result.warnings.end(), [](const std::string& w) {
+    return w.find(") dropped: its conormals point out of it, but beyond ") != std::string::npos;
+  });
+  ASSERT_NE(dropped, result.warnings.end());
+  EXPECT_NE(dropped->find("% of it the surface goes on (the rim of a densely sampled patch, not a boundary)"), std::string::npos) << *dropped;
+}
+
 }  // namespace
 }  // namespace envcrust
+
