@@ -241,18 +241,36 @@ void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   sheet.cut_handles_rel_rho = 0;
 }
 
-// A mesh input knows its own genus: the reconstruction may not add handles or cross-caps
-// (ReconstructOptions::max_genus; the lion head: genus 8 for a disc with the uniform rho).
-// Not when rho or its mode was given, or with --no-adaptive-retry.
-void bound_genus_by_input(ReconstructCommand& cmd, const LoadedSurface& loaded) {
-  if (!cmd.no_adaptive_retry && loaded.genus && cmd.rho == "auto") cmd.options.max_genus = loaded.genus;
+// With the automatic rho, a uniform run whose result has holes the input has not, or more
+// handles and cross-caps than a mesh input's own genus, runs again with adaptive rho
+// (ReconstructOptions::use_adaptive_retry; the lion head as a mesh: genus 8 for a disc with
+// the uniform rho; as points: a hole along its sparse neck). Not when rho or its mode was
+// given, or with --no-adaptive-retry.
+void choose_adaptive_retry(ReconstructCommand& cmd, const LoadedSurface& loaded) {
+  cmd.options.use_adaptive_retry = !cmd.no_adaptive_retry && cmd.rho == "auto";
+  if (cmd.options.use_adaptive_retry) cmd.options.max_genus = loaded.genus;
+}
+
+std::string describe(const pipeline::RunDefects& d, const std::optional<long>& max_genus) {
+  std::string out = d.genus ? "genus " + std::to_string(*d.genus) : std::string("no manifold");
+  auto count = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
+  if (d.extra_loops > 0) out += ", " + count(d.extra_loops, " hole the input has not", " holes the input has not");
+  if (d.missing_curves > 0) out += ", " + count(d.missing_curves, " input curve not followed", " input curves not followed");
+  return out + " (" + std::to_string(d.count(max_genus)) + " defects)";
 }
 
 std::string describe(const pipeline::AdaptiveRetry& retry) {
-  auto text = [](const std::optional<long>& g) { return g ? std::to_string(*g) : std::string("undefined"); };
-  return "rho: the uniform run has genus " + text(retry.uniform_genus) + " where the input mesh has " +
-         std::to_string(retry.max_genus) + "; with --rho-adaptive genus " + text(retry.adaptive_genus) + ", " +
+  return "rho: the uniform run has " + describe(retry.uniform, retry.max_genus) +
+         (retry.max_genus ? " where the input mesh has genus " + std::to_string(*retry.max_genus) : std::string()) +
+         "; with --rho-adaptive " + describe(retry.adaptive, retry.max_genus) + ", " +
          (retry.kept_adaptive ? "kept" : "not kept") + " (--no-adaptive-retry: keep the uniform run)";
+}
+
+nlohmann::json defects_json(const pipeline::RunDefects& d, const std::optional<long>& max_genus) {
+  return {{"genus", d.genus ? nlohmann::json(*d.genus) : nlohmann::json(nullptr)},
+          {"extra_loops", d.extra_loops},
+          {"missing_curves", d.missing_curves},
+          {"defects", d.genus ? nlohmann::json(d.count(max_genus)) : nlohmann::json(nullptr)}};
 }
 
 // Outputs checked before the run, not after minutes of it: known extensions, existing folders.
@@ -275,7 +293,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
-  bound_genus_by_input(cmd, loaded);
+  choose_adaptive_retry(cmd, loaded);
   const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
   const auto& retry = result.adaptive_retry;
   if (result.mesh.triangles.empty()) {
@@ -320,10 +338,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (loaded.is_orientable) j["input_is_orientable"] = *loaded.is_orientable;
   if (loaded.genus) j["input_genus"] = *loaded.genus;
   if (retry) {
-    auto genus = [](const std::optional<long>& g) { return g ? nlohmann::json(*g) : nlohmann::json(nullptr); };
-    j["adaptive_retry"] = {{"input_genus", retry->max_genus},
-                           {"uniform_genus", genus(retry->uniform_genus)},
-                           {"adaptive_genus", genus(retry->adaptive_genus)},
+    j["adaptive_retry"] = {{"max_genus", retry->max_genus ? nlohmann::json(*retry->max_genus) : nlohmann::json(nullptr)},
+                           {"uniform", defects_json(retry->uniform, retry->max_genus)},
+                           {"adaptive", defects_json(retry->adaptive, retry->max_genus)},
                            {"kept", retry->kept_adaptive ? "adaptive" : "uniform"}};
   }
   if (!loaded.detected_loop_widths.empty()) j["input_boundary_widths"] = loaded.detected_loop_widths;
@@ -390,7 +407,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
     std::ostringstream tolerance_text;
     tolerance_text.precision(4);
     tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << tolerance;
-    const auto check = analysis::check_boundary(report->topology, curves, tolerance);
+    const auto check = is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope.rho)
+                                   : analysis::check_boundary(report->topology, curves, tolerance);
     j["boundary_check"] = boundary_check_json(check, curves, report->topology);
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));
@@ -529,8 +547,9 @@ void register_reconstruct(CLI::App& app) {
                   "Reference for distances (default: the exact surface for builtin inputs, else the input points)");
   sub->add_flag("--no-analysis", cmd->no_analysis, "Skip the analysis of the output");
   sub->add_flag("--no-adaptive-retry", cmd->no_adaptive_retry,
-                "Mesh input: keep the uniform-rho run even when it has more handles than the input mesh "
-                "(by default the reconstruction then runs again with --rho-adaptive and keeps the run with fewer)");
+                "Keep the uniform-rho run even when its result has holes the input has not, or more handles than "
+                "a mesh input (by default the reconstruction then runs again with --rho-adaptive and keeps the "
+                "run with fewer defects)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_reconstruct(*cmd); });

@@ -2,6 +2,7 @@
 // This header holds no algorithm; each step is a stage of its own module.
 #pragma once
 
+#include "envcrust/analysis.h"
 #include "envcrust/envelope.h"
 #include "envcrust/extract.h"
 #include "envcrust/power_crust.h"
@@ -40,17 +41,34 @@ struct ReconstructOptions {
   /// non-orientable result is cut along a seam and welded back; skipped with a warning for
   /// non-manifold results). nullopt: no remeshing.
   std::optional<remesh::RemeshOptions> remesh;
+  /// Check a uniform-rho run (Method::Envelope, Extraction::Sheet) and, when it fails, run
+  /// again with adaptive rho (small where M is thin, large where it is sparse) and keep the
+  /// run with fewer defects (RunDefects::count; ReconstructResult::adaptive_retry). It fails
+  /// when its result is no manifold, has a border loop that follows no boundary curve of the
+  /// input within 2 rho (a hole where the input is too sparse for one rho), or more handles
+  /// and cross-caps than max_genus; without max_genus, any when rho had to be raised above
+  /// half the reach to bridge the input's gaps (the envelope may fold into handles there).
+  /// Off: one run.
+  bool use_adaptive_retry = false;
   /// The genus M is known to have at most (a mesh input's own: handles and cross-caps summed
-  /// over components). When a uniform-rho envelope run gives the sheet more, it runs again
-  /// with adaptive rho (small where M is thin, large where it is sparse) and the run with the
-  /// lower genus is kept (ReconstructResult::adaptive_retry). nullopt: no check.
+  /// over components); nullopt: unknown, and the defect count takes every handle as one.
   std::optional<long> max_genus;
 };
 
-/// What the max_genus check did.
+/// What is wrong with one run's result, by the checks the adaptive retry makes.
+struct RunDefects {
+  std::optional<long> genus;       ///< handles and cross-caps over components; unset: no manifold
+  std::size_t missing_curves = 0;  ///< input boundary curves no border loop follows within 2 rho
+  std::size_t extra_loops = 0;     ///< border loops that follow no input boundary curve within 2 rho
+  /// missing_curves + extra_loops + the handles and cross-caps beyond max_genus (all of them
+  /// when it is unknown); the largest value for no manifold.
+  [[nodiscard]] std::size_t count(std::optional<long> max_genus) const;
+};
+
+/// What the adaptive retry did.
 struct AdaptiveRetry {
-  long max_genus = 0;
-  std::optional<long> uniform_genus, adaptive_genus;  ///< unset: not a manifold (or empty)
+  std::optional<long> max_genus;
+  RunDefects uniform, adaptive;
   bool kept_adaptive = false;
 };
 
@@ -67,16 +85,22 @@ struct ReconstructResult {
   std::optional<powercrust::PowerCrustStats> power_crust_stats;
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
-  std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the max_genus check reran
+  std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
   StageTimes seconds;
   std::vector<std::string> warnings;
 };
 
 /// Reconstruct M from its samples (points with normal lines and boundary curves): one run,
-/// a second with adaptive rho if the first exceeds options.max_genus, then the remeshing.
+/// a second with adaptive rho if the first fails the check of options.use_adaptive_retry,
+/// then the remeshing.
 /// @throws InvalidInput, DegenerateInput, InvalidOptions from the stages.
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options = {}, const Progress& progress = {});
+
+/// The border loops of a result against the input's boundary curves, within 2 rho: the check
+/// of the adaptive retry and of the CLI's report.
+analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
+                                              const envelope::SurfaceSamples& samples, double rho);
 
 /// The power shape's triangles as a mesh over the In poles (the paper's output).
 TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result);

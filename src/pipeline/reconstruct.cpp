@@ -3,6 +3,9 @@
 
 #include "envcrust/topology.h"
 
+#include <algorithm>
+#include <limits>
+
 
 namespace envcrust::pipeline {
 namespace {
@@ -84,29 +87,58 @@ ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, cons
   return out;
 }
 
-std::optional<long> genus_of(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty()) return std::nullopt;
-  return topology::total_genus(topology::analyze_topology(mesh));
+RunDefects defects_of(const ReconstructResult& run, const envelope::SurfaceSamples& samples) {
+  RunDefects d;
+  if (run.mesh.triangles.empty()) return d;
+  const topology::MeshTopology t = topology::analyze_topology(run.mesh);
+  d.genus = topology::total_genus(t);
+  const analysis::BoundaryCheck check = check_result_boundary(t, samples, run.envelope.rho);
+  d.missing_curves = check.missing_curves.size();
+  d.extra_loops = check.extra_loops.size();
+  return d;
+}
+
+// A run fails when its result is no manifold, has holes the input has not, more handles than
+// the known genus, or any handle while rho had to be raised above half the reach to bridge
+// the input's gaps (where the envelope may fold into handles: the uniform rho is too large
+// for the thin parts and too small for the sparse ones, which adaptive rho is for).
+bool fails(const RunDefects& d, const envelope::EnvelopeSamples& envelope, std::optional<long> max_genus) {
+  if (!d.genus || d.extra_loops > 0) return true;
+  if (max_genus) return *d.genus > *max_genus;
+  return *d.genus > 0 && envelope.is_rho_gap_bound;
 }
 
 }  // namespace
+
+std::size_t RunDefects::count(std::optional<long> max_genus) const {
+  if (!genus) return std::numeric_limits<std::size_t>::max();
+  const long excess = std::max(0L, *genus - max_genus.value_or(0));
+  return missing_curves + extra_loops + static_cast<std::size_t>(excess);
+}
+
+analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
+                                              const envelope::SurfaceSamples& samples, double rho) {
+  std::vector<Polyline> curves;
+  curves.reserve(samples.boundary.size());
+  for (const BoundaryCurve& c : samples.boundary) curves.push_back(c.polyline());
+  return analysis::check_boundary(result, curves, 2.0 * rho);
+}
 
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options, const Progress& progress) {
   ReconstructOptions once = options;
   once.remesh.reset();
   ReconstructResult out = reconstruct_once(samples, once, progress);
-  if (options.max_genus && options.method == Method::Envelope && options.extraction == Extraction::Sheet &&
+  if (options.use_adaptive_retry && options.method == Method::Envelope && options.extraction == Extraction::Sheet &&
       options.envelope.rho_mode == envelope::RhoMode::Uniform && !out.mesh.triangles.empty()) {
     AdaptiveRetry retry;
-    retry.max_genus = *options.max_genus;
-    retry.uniform_genus = genus_of(out.mesh);
-    if (!retry.uniform_genus || *retry.uniform_genus > retry.max_genus) {
+    retry.max_genus = options.max_genus;
+    retry.uniform = defects_of(out, samples);
+    if (fails(retry.uniform, out.envelope, options.max_genus)) {
       once.envelope.rho_mode = envelope::RhoMode::Adaptive;
       ReconstructResult adaptive = reconstruct_once(samples, once, progress);
-      retry.adaptive_genus = genus_of(adaptive.mesh);
-      retry.kept_adaptive =
-          retry.adaptive_genus && (!retry.uniform_genus || *retry.adaptive_genus < *retry.uniform_genus);
+      retry.adaptive = defects_of(adaptive, samples);
+      retry.kept_adaptive = retry.adaptive.count(options.max_genus) < retry.uniform.count(options.max_genus);
       if (retry.kept_adaptive) {
         adaptive.seconds.envelope += out.seconds.envelope;
         adaptive.seconds.extraction += out.seconds.extraction;

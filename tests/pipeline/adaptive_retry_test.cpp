@@ -1,0 +1,82 @@
+// Tests of reconstruct's adaptive retry: when a uniform-rho run fails its check, the run is
+// repeated with adaptive rho and the one with fewer defects is kept.
+#include "fixtures/surface_samples.h"
+
+#include "envcrust/pipeline.h"
+#include "envcrust/topology.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace envcrust {
+namespace {
+
+TEST(RunDefects, CountsMismatchesAndHandlesBeyondTheBound) {
+  pipeline::RunDefects d;
+  d.genus = 3;
+  d.missing_curves = 1;
+  d.extra_loops = 2;
+  EXPECT_EQ(d.count(std::nullopt), 6u);  // unknown genus: every handle counts
+  EXPECT_EQ(d.count(1), 5u);
+  EXPECT_EQ(d.count(5), 3u);             // fewer handles than allowed count as none
+  d.genus.reset();                       // no manifold: worse than any manifold
+  EXPECT_EQ(d.count(0), std::numeric_limits<std::size_t>::max());
+}
+
+// A torus said to have genus 0 (a wrong bound): the uniform run's genus 1 exceeds it, so the
+// run is repeated with adaptive rho; that run has genus 1 as well, no fewer defects, so the
+// uniform run is kept, and both runs' checks are reported.
+TEST(AdaptiveRetry, KeepsTheUniformRunWhenAdaptiveIsNoBetter) {
+  const auto samples = fixtures::builtin_samples("torus", 4000);
+  pipeline::ReconstructOptions options;
+  options.use_adaptive_retry = true;
+  options.max_genus = 0;
+  const auto result = pipeline::reconstruct(samples, options);
+  ASSERT_TRUE(result.adaptive_retry.has_value());
+  const auto& retry = *result.adaptive_retry;
+  EXPECT_EQ(retry.max_genus, 0);
+  EXPECT_EQ(retry.uniform.genus, 1);
+  EXPECT_EQ(retry.adaptive.genus, 1);
+  EXPECT_EQ(retry.uniform.extra_loops, 0u);
+  EXPECT_EQ(retry.adaptive.extra_loops, 0u);
+  EXPECT_FALSE(retry.kept_adaptive);
+  EXPECT_TRUE(result.envelope.local_rho.empty());  // the kept run is the uniform one
+  const auto t = topology::analyze_topology(result.mesh);
+  EXPECT_EQ(t.euler_characteristic, 0);
+  EXPECT_TRUE(t.boundary_loops.empty());
+}
+
+// The same torus with the bound it has (or without a bound, rho not raised for gaps): the
+// uniform run passes its check and runs once.
+TEST(AdaptiveRetry, RunsOnceWhenTheCheckPasses) {
+  const auto samples = fixtures::builtin_samples("torus", 4000);
+  pipeline::ReconstructOptions options;
+  options.use_adaptive_retry = true;
+  options.max_genus = 1;
+  EXPECT_FALSE(pipeline::reconstruct(samples, options).adaptive_retry.has_value());
+  options.max_genus.reset();
+  const auto result = pipeline::reconstruct(samples, options);
+  EXPECT_FALSE(result.envelope.is_rho_gap_bound);
+  EXPECT_FALSE(result.adaptive_retry.has_value());
+}
+
+// A cylinder whose boundary curves are given as they are: its border loops follow them.
+// With one curve left out, the result's loop there follows no given curve (a hole the input
+// has not), which fails the check.
+TEST(CheckResultBoundary, FindsLoopsThatFollowNoCurve) {
+  auto samples = fixtures::builtin_samples("cylinder", 4000);
+  pipeline::ReconstructOptions options;
+  const auto result = pipeline::reconstruct(samples, options);
+  const auto t = topology::analyze_topology(result.mesh);
+  const auto check = pipeline::check_result_boundary(t, samples, result.envelope.rho);
+  EXPECT_TRUE(check.is_consistent());
+  EXPECT_DOUBLE_EQ(check.tolerance, 2.0 * result.envelope.rho);
+  samples.boundary.pop_back();
+  const auto one_curve = pipeline::check_result_boundary(t, samples, result.envelope.rho);
+  EXPECT_TRUE(one_curve.missing_curves.empty());
+  EXPECT_EQ(one_curve.extra_loops.size(), 1u);
+}
+
+}  // namespace
+}  // namespace envcrust
