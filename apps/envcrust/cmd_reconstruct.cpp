@@ -256,7 +256,7 @@ std::string describe(const pipeline::RunDefects& d, const std::optional<long>& m
   auto count = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
   if (d.extra_loops > 0) out += ", " + count(d.extra_loops, " hole the input has not", " holes the input has not");
   if (d.missing_curves > 0) out += ", " + count(d.missing_curves, " input curve not followed", " input curves not followed");
-  return out + " (" + std::to_string(d.count(max_genus)) + " defects)";
+  return out + " (" + count(d.count(max_genus), " defect", " defects") + ")";
 }
 
 std::string describe(const pipeline::AdaptiveRetry& retry) {
