@@ -6,8 +6,7 @@
 #include "envcrust/normals.h"
 
 #include <algorithm>
-#include <array>
-#include <limits>
+#include <cmath>
 #include <sstream>
 
 namespace envcrust::boundary {
@@ -37,7 +36,7 @@ constexpr double kMaxArcJoinLocal = 5.0;
 // Shortest arc joined, as a fraction of min_loop_length: false-candidate chains around random
 // voids reach 10 s at 50k points (two of them were joined into a false loop on the saddle).
 constexpr double kMinJoinedArc = 0.6;
-// Normal lines within 30 degrees of a loop's plane: the sheet the loop would be a hole in.
+// Normal lines within 30 degrees of each other: the same sheet.
 constexpr double kSameSheetCos = 0.866;
 // An outer rim: conormals on average within 60 degrees of pointing away from its centroid.
 constexpr double kOuterRimCos = 0.5;
