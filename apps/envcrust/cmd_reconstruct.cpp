@@ -402,13 +402,12 @@ void run_reconstruct(ReconstructCommand& cmd) {
     std::vector<Polyline> curves;
     for (const auto& c : loaded.samples.boundary) curves.push_back(c.polyline());
     const bool is_envelope = cmd.options.method == pipeline::Method::Envelope;
-    const double tolerance =
-        is_envelope ? 2.0 * result.envelope.rho : 0.01 * mesh::bbox_diagonal(loaded.samples.points);
+    const auto check =
+        is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope.rho)
+                    : analysis::check_boundary(report->topology, curves, 0.01 * mesh::bbox_diagonal(loaded.samples.points));
     std::ostringstream tolerance_text;
     tolerance_text.precision(4);
-    tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << tolerance;
-    const auto check = is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope.rho)
-                                   : analysis::check_boundary(report->topology, curves, tolerance);
+    tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << check.tolerance;
     j["boundary_check"] = boundary_check_json(check, curves, report->topology);
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));

@@ -17,6 +17,16 @@ namespace {
 using envcrust::testing::CliTest;
 using envcrust::testing::run_envcrust_json;
 
+// The analysis says: one orientable manifold piece with `loops` boundary loops and Euler
+// characteristic `chi`.
+void expect_one_orientable_piece(const nlohmann::json& a, int loops, int chi) {
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_EQ(a["components"], 1);
+  EXPECT_EQ(a["is_orientable"], true);
+  EXPECT_EQ(a["boundary_loops"], loops);
+  EXPECT_EQ(a["euler_characteristic"], chi);
+}
+
 TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "foot_vhacd";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
@@ -25,11 +35,7 @@ TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
                                    (folder / "foot_open.off").string() + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 1);
   const auto& a = j["analysis"];
-  EXPECT_EQ(a["is_manifold"], true);
-  EXPECT_EQ(a["components"], 1);
-  EXPECT_EQ(a["boundary_loops"], 1);
-  EXPECT_EQ(a["euler_characteristic"], 1);
-  EXPECT_EQ(a["is_orientable"], true);
+  expect_one_orientable_piece(a, 1, 1);
   // The ankle loop of the scan's own mesh is 2.39 long; ours follows the sparse rim samples.
   EXPECT_NEAR(a["loops"][0]["length"].get<double>(), 2.39, 0.6);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.02);
@@ -51,11 +57,7 @@ TEST_F(CliTest, issue_5_bunny_is_one_orientable_genus_0_piece_with_its_base_hole
   EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
   EXPECT_GT(j["sheet"]["cut_holes_filled"].get<int>(), 0);
   const auto& a = j["analysis"];
-  EXPECT_EQ(a["is_manifold"], true);
-  EXPECT_EQ(a["components"], 1);
-  EXPECT_EQ(a["is_orientable"], true);
-  EXPECT_EQ(a["boundary_loops"], 4);
-  EXPECT_EQ(a["euler_characteristic"], -2);  // genus 0 with 4 holes
+  expect_one_orientable_piece(a, 4, -2);  // genus 0 with 4 holes
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.025);
   // No topology hint is left; the only one names the base's narrow slot (a real hole, 4.5
@@ -81,11 +83,7 @@ TEST_F(CliTest, issue_5_bunny_with_a_uniform_rho_is_one_genus_0_piece) {
   EXPECT_GT(j["sheet"]["orientation_seams"].get<int>(), 0);
   EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
   const auto& a = j["analysis"];
-  EXPECT_EQ(a["is_manifold"], true);
-  EXPECT_EQ(a["components"], 1);
-  EXPECT_EQ(a["is_orientable"], true);
-  EXPECT_EQ(a["boundary_loops"], 4);
-  EXPECT_EQ(a["euler_characteristic"], -2);
+  expect_one_orientable_piece(a, 4, -2);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.025);
 }
@@ -107,11 +105,7 @@ TEST_F(CliTest, issue_5_lion_head_mesh_retries_with_adaptive_rho_and_is_a_disc) 
   EXPECT_LT(retry["adaptive"]["defects"].get<long>(), retry["uniform"]["defects"].get<long>());
   EXPECT_EQ(retry["kept"], "adaptive");
   const auto& a = j["analysis"];
-  EXPECT_EQ(a["is_manifold"], true);
-  EXPECT_EQ(a["components"], 1);
-  EXPECT_EQ(a["is_orientable"], true);
-  EXPECT_EQ(a["boundary_loops"], 1);
-  EXPECT_EQ(a["euler_characteristic"], 1);
+  expect_one_orientable_piece(a, 1, 1);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.05);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.07);
 }
@@ -133,11 +127,7 @@ TEST_F(CliTest, issue_5_lion_head_points_are_a_disc_with_the_neck_loop) {
   EXPECT_EQ(retry["kept"], "adaptive");
   EXPECT_EQ(retry["adaptive"]["defects"], 0);
   const auto& a = j["analysis"];
-  EXPECT_EQ(a["is_manifold"], true);
-  EXPECT_EQ(a["components"], 1);
-  EXPECT_EQ(a["is_orientable"], true);
-  EXPECT_EQ(a["boundary_loops"], 1);
-  EXPECT_EQ(a["euler_characteristic"], 1);
+  expect_one_orientable_piece(a, 1, 1);
   // The neck loop of the scan's own mesh is 2.18 long.
   EXPECT_NEAR(a["loops"][0]["length"].get<double>(), 2.18, 0.2);
   EXPECT_EQ(j["boundary_check"]["is_consistent"], true);
