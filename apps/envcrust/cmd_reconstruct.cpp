@@ -294,7 +294,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   choose_adaptive_retry(cmd, loaded);
-  const auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
+  auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
   const auto& retry = result.adaptive_retry;
   if (result.mesh.triangles.empty()) {
     const auto& e = result.envelope;
@@ -396,7 +396,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
     } else {
       reference.points = loaded.samples.points;
     }
-    report = analysis::analyze_mesh(result.mesh, reference);
+    report = result.topology ? analysis::analyze_mesh(result.mesh, std::move(*result.topology), reference)
+                             : analysis::analyze_mesh(result.mesh, reference);
     j["analysis"] = analysis_json(*report);
     // The result's border against the curves the reconstruction was given or detected.
     std::vector<Polyline> curves;

@@ -66,6 +66,11 @@ struct AnalysisReport {
 AnalysisReport analyze_mesh(const TriangleMesh& mesh, const Reference& reference = {},
                             const AnalyzeOptions& options = {});
 
+/// The same for a mesh whose topology is already known (topology::analyze_topology(mesh),
+/// e.g. ReconstructResult::topology), which is then not computed again.
+AnalysisReport analyze_mesh(const TriangleMesh& mesh, topology::MeshTopology topology,
+                            const Reference& reference = {}, const AnalyzeOptions& options = {});
+
 /// Boundary loops of a mesh against the boundary curves it should have (those the
 /// reconstruction was given or detected): each curve's nearest loop (least Hausdorff
 /// distance), the curves no loop follows within the tolerance (closed, or torn apart), and

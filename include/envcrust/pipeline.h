@@ -86,6 +86,9 @@ struct ReconstructResult {
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
   std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
+  /// The topology of `mesh` when the retry check computed it (and no remeshing changed the
+  /// mesh since): analysis::analyze_mesh takes it instead of computing it again.
+  std::optional<topology::MeshTopology> topology;
   StageTimes seconds;
   std::vector<std::string> warnings;
 };

@@ -120,8 +120,13 @@ std::vector<BoundaryMatch> match_boundaries(const topology::MeshTopology& topo, 
 
 AnalysisReport analyze_mesh(const TriangleMesh& mesh, const Reference& reference,
                             const AnalyzeOptions& options) {
+  return analyze_mesh(mesh, topology::analyze_topology(mesh), reference, options);
+}
+
+AnalysisReport analyze_mesh(const TriangleMesh& mesh, topology::MeshTopology topology,
+                            const Reference& reference, const AnalyzeOptions& options) {
   AnalysisReport report;
-  report.topology = topology::analyze_topology(mesh);
+  report.topology = std::move(topology);
   const auto& t = report.topology;
   if (t.non_manifold_edges > 0)
     report.warnings.push_back(std::to_string(t.non_manifold_edges) + " non-manifold edges");

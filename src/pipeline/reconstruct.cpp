@@ -14,6 +14,7 @@ namespace {
 void remesh_result(ReconstructResult& out, const std::optional<remesh::RemeshOptions>& options,
                    const Progress& progress) {
   if (!options) return;
+  out.topology.reset();
   progress.report("remesh", 0.0);
   auto r = remesh::remesh(out.mesh, *options);
   out.mesh = std::move(r.mesh);
@@ -87,10 +88,11 @@ ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, cons
   return out;
 }
 
-RunDefects defects_of(const ReconstructResult& run, const envelope::SurfaceSamples& samples) {
+// The checks of one run; its topology is kept in run.topology for the report.
+RunDefects defects_of(ReconstructResult& run, const envelope::SurfaceSamples& samples) {
   RunDefects d;
   if (run.mesh.triangles.empty()) return d;
-  const topology::MeshTopology t = topology::analyze_topology(run.mesh);
+  const topology::MeshTopology& t = run.topology.emplace(topology::analyze_topology(run.mesh));
   d.genus = topology::total_genus(t);
   const analysis::BoundaryCheck check = check_result_boundary(t, samples, run.envelope.rho);
   d.missing_curves = check.missing_curves.size();

@@ -45,6 +45,10 @@ TEST(AdaptiveRetry, KeepsTheUniformRunWhenAdaptiveIsNoBetter) {
   const auto t = topology::analyze_topology(result.mesh);
   EXPECT_EQ(t.euler_characteristic, 0);
   EXPECT_TRUE(t.boundary_loops.empty());
+  // The check's topology of the kept mesh comes with the result, for the report.
+  ASSERT_TRUE(result.topology.has_value());
+  EXPECT_EQ(result.topology->euler_characteristic, t.euler_characteristic);
+  EXPECT_EQ(result.topology->faces, t.faces);
 }
 
 // The same torus with the bound it has (or without a bound, rho not raised for gaps): the
