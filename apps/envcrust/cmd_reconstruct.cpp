@@ -100,6 +100,10 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "(sampling gaps, not holes); 0 keeps all")
       ->capture_default_str()
       ->check(number_above(0, true));
+  sub.add_flag("--no-boundary-outer-fit",
+               [&cmd](std::int64_t) { cmd.sampling.boundary.fit_to_outer_samples = false; },
+               "Point files: leave detected curves on the centre line of the flagged band instead of "
+               "moving them out to its outermost samples");
   sub.add_flag("--rho-adaptive",
                [&cmd](std::int64_t) { cmd.options.envelope.rho_mode = envelope::RhoMode::Adaptive; },
                "Vary rho with the local feature size: rho(p) = alpha lfs(p), clamped to "

@@ -145,4 +145,13 @@ BoundaryCurve frame_curve(const Polyline& curve, const std::vector<Point3>& poin
                           const Candidates& candidates, const std::vector<std::size_t>& component,
                           std::size_t curve_id, std::vector<std::string>& warnings);
 
+/// Moves each vertex of a framed curve along its conormal to the farthest of the band's
+/// samples beside it (within `spacing` along the tangent and of the tangent plane, their
+/// conormals within 60 degrees of the vertex's), less 1.5 times the samples' median scatter
+/// across the tangent plane (noise), as a median over the vertex and two neighbours on either
+/// side, limited to `max_move` either way; vertices with no such sample stay (outer_fit.cpp).
+void fit_to_outer_samples(BoundaryCurve& curve, const std::vector<Point3>& points,
+                          const Candidates& candidates, const std::vector<std::size_t>& component,
+                          double spacing, double max_move);
+
 }  // namespace envcrust::boundary::detail

@@ -38,6 +38,9 @@ constexpr double kMaxArcJoinLocal = 5.0;
 constexpr double kMinJoinedArc = 0.6;
 // Normal lines within 30 degrees of each other: the same sheet.
 constexpr double kSameSheetCos = 0.866;
+// Largest move of a curve vertex out to (or in to) its outermost samples, in s: the fitted
+// centre line lies about 0.8 s inside the band's outer edge.
+constexpr double kMaxOuterFit = 2.0;
 // An outer rim: conormals on average within 60 degrees of pointing away from its centroid.
 constexpr double kOuterRimCos = 0.5;
 
@@ -203,6 +206,12 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     }
     Polyline curve = detail::resample_closed(line.points, s);
     curve = detail::smooth_closed(curve, options.smoothing_half_window);
+    if (options.fit_to_outer_samples) {
+      std::vector<std::string> unused;  // the final framing below warns
+      BoundaryCurve fitted = detail::frame_curve(curve, points, normals, index, candidates, component, 0, unused);
+      detail::fit_to_outer_samples(fitted, points, candidates, component, s, kMaxOuterFit * s);
+      curve = fitted.polyline();
+    }
     curve = detail::resample_closed(curve, output_spacing);
     const double local = local_spacing(points, index, component);
     const double width = local > 0 ? loop_width(curve) / local : 0.0;

@@ -193,6 +193,35 @@ BoundaryPolylines polylines_of(const envelope::SurfaceSamples& surface) {
   return boundary;
 }
 
+// How far a point lies beyond the boundary curves: its offset from the nearest curve point
+// along the outward conormal there (at a corner the larger of the two edges' offsets), for
+// points within `reach` of a curve vertex; farther points are not judged (a curve's
+// half-space says nothing about a part of the surface that curls round far from it).
+class CurveSide {
+ public:
+  CurveSide(const envelope::SurfaceSamples& surface, double reach)
+      : boundary_(polylines_of(surface)), index_(boundary_.points), reach_(reach) {
+    for (const auto& c : surface.boundary)
+      for (const auto& v : c.vertices) {
+        conormals_.push_back(v.conormal);
+        conormals_next_.push_back(v.is_corner ? v.conormal_next : v.conormal);
+      }
+  }
+  [[nodiscard]] std::optional<double> level(const Point3& x) const {
+    if (boundary_.points.empty()) return std::nullopt;
+    const auto [i, d] = index_.nearest(x);
+    if (d > reach_) return std::nullopt;
+    const Vector3 offset = x - onto_boundary(x, boundary_, index_).point;
+    return std::max(offset * conormals_[i], offset * conormals_next_[i]);
+  }
+
+ private:
+  BoundaryPolylines boundary_;
+  NearestIndex index_;
+  double reach_;
+  std::vector<Vector3> conormals_, conormals_next_;
+};
+
 }  // namespace
 
 ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSamples& surface,
@@ -240,24 +269,11 @@ ProjectionStats project_onto_samples(TaggedMesh& t, const envelope::SurfaceSampl
 
 std::size_t trim_beyond_boundary(TaggedMesh& t, const envelope::SurfaceSamples& surface, double reach) {
   if (surface.boundary.empty()) return 0;
-  const BoundaryPolylines boundary = polylines_of(surface);
-  const NearestIndex index(boundary.points);
-  // At a corner the region beyond either edge is outside M: take the larger level.
-  std::vector<Vector3> conormals, conormals_next;
-  for (const auto& c : surface.boundary)
-    for (const auto& v : c.vertices) {
-      conormals.push_back(v.conormal);
-      conormals_next.push_back(v.is_corner ? v.conormal_next : v.conormal);
-    }
+  const CurveSide side(surface, reach);
   auto& m = t.mesh;
   std::vector<double> level(m.vertices.size(), -1.0);
-  for (Index v = 0; v < m.vertices.size(); ++v) {
-    const auto [i, d] = index.nearest(m.vertices[v]);
-    if (d > reach) continue;
-    const Point3 b = onto_boundary(m.vertices[v], boundary, index).point;
-    const Vector3 offset = m.vertices[v] - b;
-    level[v] = std::max(offset * conormals[i], offset * conormals_next[i]);
-  }
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    if (const auto l = side.level(m.vertices[v])) level[v] = *l;
   const std::size_t before = m.triangles.size();
   trim_mesh(t, level);
   return before - std::min(before, m.triangles.size());
@@ -272,7 +288,8 @@ namespace {
 // Vertices within two border edges of a corner of the curves (the square's) stay put, or
 // the corner would be rounded off.
 void smooth_border_loops(TriangleMesh& m, const std::vector<std::vector<std::uint32_t>>& faces_of,
-                         const std::vector<topology::BoundaryLoop>& loops, const std::vector<Point3>& corners) {
+                         const std::vector<topology::BoundaryLoop>& loops, const std::vector<Point3>& corners,
+                         const CurveSide& side) {
   for (int round = 0; round < 2; ++round) {
     std::vector<std::pair<Index, Point3>> moves;
     for (const auto& loop : loops) {
@@ -286,7 +303,14 @@ void smooth_border_loops(TriangleMesh& m, const std::vector<std::vector<std::uin
         bool near_corner = false;
         for (const Point3& corner : corners)  // a handful (four for the square)
           near_corner = near_corner || 2.0 * CGAL::squared_distance(corner, at) < reach2;
-        if (!near_corner) moves.emplace_back(loop.vertices[i], at + 0.5 * (CGAL::midpoint(prev, next) - at));
+        if (near_corner) continue;
+        // Where the curve bends (the trefoil ribbon's rims), a move towards the midpoint of
+        // the neighbours can leave the trimmed side: measured, a vertex moved 1.1 rho past the
+        // curve, which the snap below then refused to bring back.
+        const Point3 target = at + 0.5 * (CGAL::midpoint(prev, next) - at);
+        const auto was = side.level(at), will = side.level(target);
+        if (will && *will > std::max(0.0, was.value_or(0.0))) continue;
+        moves.emplace_back(loop.vertices[i], target);
       }
     }
     std::sort(moves.begin(), moves.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -348,7 +372,8 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   for (const auto& c : surface.boundary)
     for (const auto& v : c.vertices)
       if (v.is_corner) corners.push_back(v.position);
-  smooth_border_loops(m, faces_of, loops, corners);
+  // The trim's reach (2 rho; max_move is rho).
+  smooth_border_loops(m, faces_of, loops, corners, CurveSide(surface, 2.0 * max_move));
   const std::vector<Point3> before = m.vertices;
   std::vector<std::optional<CurvePoint>> snap(m.vertices.size());
   // Flips are judged in the surface's tangent plane at the nearest curve point; a refused

@@ -3,7 +3,7 @@
 // boundary loop; the bunny, whose thin ear tips come out with handles and cross-caps, is a
 // genus-0 manifold with its detected base holes once those are cut out and closed (both cuts
 // are a point file's defaults: the handle cut, and the orientation cut of the seams that short
-// reversing loops cross); the lion head, as a mesh and as points, is a disc through the
+// reversing loops cross), with a uniform or an adaptive rho; the lion head, as a mesh and as points, is a disc through the
 // adaptive retry.
 #include "cli_fixture.h"
 #include "run_command.h"
@@ -42,46 +42,44 @@ TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.02);
 }
 
-// The bunny with the defaults: the uniform run (below) leaves 2 border loops that follow no
-// detected curve, so the run is repeated with adaptive rho, whose result follows every curve
-// and is kept: one orientable genus-0 piece with the 4 detected base holes.
+// The bunny with the defaults: the uniform run follows each of the 4 detected curves (since
+// they are fitted to the outermost samples; before, 2 of its loops ran along none within 2
+// rho and the adaptive retry was kept), so it runs once. Its cross-caps and handles at the
+// ear tips and the base rim are cut out and the holes closed.
 TEST_F(CliTest, issue_5_bunny_is_one_orientable_genus_0_piece_with_its_base_holes) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
   const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
                                    " --reference " + (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 4);  // the base's 4 holes; the small one on the body is missed
-  EXPECT_GT(j["adaptive_retry"]["uniform"]["extra_loops"].get<int>(), 0);
-  EXPECT_EQ(j["adaptive_retry"]["kept"], "adaptive");
+  EXPECT_FALSE(j.contains("adaptive_retry"));
   EXPECT_EQ(j["boundary_check"]["is_consistent"], true);
+  EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
+  EXPECT_GT(j["sheet"]["orientation_seams"].get<int>(), 0);
+  EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
   EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
   EXPECT_GT(j["sheet"]["cut_holes_filled"].get<int>(), 0);
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 4, -2);  // genus 0 with 4 holes
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.025);
-  // No topology hint is left; the only one names the base's narrow slot (a real hole, 4.5
+  // No topology hint is left; the only one names the base's narrow slot (a real hole, 4.4
   // spacings wide) as what --boundary-min-width would drop.
   for (const auto& hint : j["hints"])
     EXPECT_EQ(hint.get<std::string>().rfind("detected boundary loop", 0), 0u) << hint;
 }
 
-// The uniform run alone (--no-adaptive-retry): the sheet crosses itself at the ear tips and the
-// base rim, and every orientation seam there is crossed by a reversing loop shorter than
-// 4 pi rho (0.7-11.5 rho measured), so all are cut; the repair after the cuts opens a slit at
-// an ear tip (4 vertices, 23 mm long, under 1 mm wide) that is closed like the cut holes, so
-// the result has the truth's genus and 4 loops (one of the base holes widened by the cut band
-// beside it).
-TEST_F(CliTest, issue_5_bunny_with_a_uniform_rho_is_one_genus_0_piece) {
+// With --rho-adaptive (small where the ear tips are thin, large where the samples are
+// sparse) the sheet has no orientation seam; its handles are cut out, and the result has the
+// same topology.
+TEST_F(CliTest, issue_5_bunny_with_adaptive_rho_is_one_genus_0_piece) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
   const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
-                                   " --no-adaptive-retry --reference " + (folder / "bun_zipper.ply").string() +
-                                   " --json");
+                                   " --rho-adaptive --reference " + (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_FALSE(j.contains("adaptive_retry"));
-  EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
-  EXPECT_GT(j["sheet"]["orientation_seams"].get<int>(), 0);
-  EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
+  EXPECT_EQ(j["sheet"]["orientation_seams"], 0);
+  EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 4, -2);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
