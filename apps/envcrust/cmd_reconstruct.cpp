@@ -6,6 +6,7 @@
 #include "inputs.h"
 #include "surface_input.h"
 
+#include "envcrust/distance.h"
 #include "envcrust/errors.h"
 #include "envcrust/heap.h"
 #include "envcrust/io.h"
@@ -391,6 +392,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   }
   std::vector<std::string> warnings = result.warnings;
   std::optional<analysis::AnalysisReport> report;
+  std::optional<double> boundary_gap;  // of the reference's boundary from the samples, / diagonal
   if (!cmd.no_analysis) {
     analysis::Reference reference;
     if (!cmd.reference.empty()) {
@@ -403,6 +405,14 @@ void run_reconstruct(ReconstructCommand& cmd) {
     report = result.topology ? analysis::analyze_mesh(result.mesh, std::move(*result.topology), reference)
                              : analysis::analyze_mesh(result.mesh, reference);
     j["analysis"] = analysis_json(*report);
+    // How far the input's samples leave the true boundary: near it, truth->mesh cannot be
+    // smaller (the bar reads max(bar, 1.1 x this) there).
+    if (report->distance && !reference.boundary.empty()) {
+      const double diagonal = report->distance->reference_diagonal;
+      const auto gap = distance::curves_to_points(reference.boundary, loaded.samples.points, 1e-4 * diagonal);
+      boundary_gap = gap.max / diagonal;
+      j["analysis"]["reference_boundary_gap"] = {{"max", gap.max}, {"max_rel_diag", *boundary_gap}};
+    }
     // The result's border against the curves the reconstruction was given or detected.
     std::vector<Polyline> curves;
     for (const auto& c : loaded.samples.boundary) curves.push_back(c.polyline());
@@ -459,6 +469,10 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << s->min_angle_deg_after << " deg, " << s->seconds << " s\n";
   for (const auto& w : warnings) std::cout << "  warning: " << w << "\n";
   if (report) print_analysis(std::cout, cmd.output, *report);
+  if (boundary_gap)
+    std::cout << "  the input's samples leave the reference's boundary up to " << std::setprecision(3)
+              << 100 * *boundary_gap << "% of the diagonal from the nearest of them (as closely as they "
+              << "locate it)\n";
   for (const auto& h : hints) std::cout << "  hint: " << h << "\n";
 }
 

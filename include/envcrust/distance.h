@@ -40,6 +40,14 @@ DirectedDistance points_to_mesh(const std::vector<Point3>& points, const Triangl
 DirectedDistance points_to_points(const std::vector<Point3>& points,
                                   const std::vector<Point3>& reference);
 
+/// Distance of closed curves to the nearest of a set of points, over the curves' vertices and
+/// points along their segments at most `max_step` apart (> 0). With a surface's true boundary
+/// and its samples: how far the samples leave the boundary, which no reconstruction from them
+/// can locate more closely.
+/// @throws InvalidInput if max_step is not positive.
+DirectedDistance curves_to_points(const std::vector<Polyline>& curves, const std::vector<Point3>& points,
+                                  double max_step);
+
 /// Mesh against a reference mesh: vertices plus `samples` area samples on each side.
 /// @throws InvalidInput if either mesh has no triangle.
 DistanceReport compare_to_mesh(const TriangleMesh& mesh, const TriangleMesh& reference,

@@ -1,5 +1,6 @@
 // Point-to-mesh (AABB tree) and point-to-points (kd-tree) distances, in parallel with oneTBB.
 #include "envcrust/distance.h"
+#include "envcrust/errors.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -8,6 +9,7 @@
 #include <CGAL/Search_traits_3.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace envcrust::distance {
@@ -70,6 +72,22 @@ DirectedDistance points_to_points(const std::vector<Point3>& points,
                       }
                     });
   return summarize(points, d);
+}
+
+DirectedDistance curves_to_points(const std::vector<Polyline>& curves, const std::vector<Point3>& points,
+                                  double max_step) {
+  if (!(max_step > 0)) throw InvalidInput("curves_to_points: max_step must be > 0");
+  std::vector<Point3> along;
+  for (const Polyline& curve : curves) {
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      const Point3& a = curve[i];
+      const Point3& b = curve[(i + 1) % curve.size()];
+      const auto steps = static_cast<std::size_t>(std::ceil(std::sqrt(CGAL::squared_distance(a, b)) / max_step));
+      for (std::size_t k = 0; k < std::max<std::size_t>(steps, 1); ++k)
+        along.push_back(a + (static_cast<double>(k) / static_cast<double>(std::max<std::size_t>(steps, 1))) * (b - a));
+    }
+  }
+  return points_to_points(along, points);
 }
 
 }  // namespace envcrust::distance

@@ -69,6 +69,20 @@ TEST(Distance, concentric_circles_are_their_radius_difference_apart) {
   EXPECT_NEAR(distance::closed_polyline_hausdorff(circle(1, 400), circle(1, 400, 0.3)), 0.3, 1e-9);
 }
 
+// Samples at the corners of a unit square leave the midpoints of its sides 0.5 from the
+// nearest one; the midpoints are no vertex of the curve, so only the steps along the sides find
+// them. Samples inside the square (at the centre) are farther.
+TEST(Distance, a_boundary_is_as_far_from_its_samples_as_its_emptiest_stretch) {
+  const Polyline square{Point3(0, 0, 0), Point3(1, 0, 0), Point3(1, 1, 0), Point3(0, 1, 0)};
+  const std::vector<Point3> corners(square.begin(), square.end());
+  const auto gap = distance::curves_to_points({square}, corners, 0.01);
+  EXPECT_NEAR(gap.max, 0.5, 1e-12);
+  EXPECT_EQ(gap.samples, 400u);
+  EXPECT_NEAR(distance::curves_to_points({square}, corners, 2.0).max, 0.0, 1e-12);  // vertices only
+  EXPECT_NEAR(distance::curves_to_points({square}, {Point3(0.5, 0.5, 0)}, 0.01).max, std::sqrt(0.5), 1e-12);
+  EXPECT_THROW(distance::curves_to_points({square}, corners, 0.0), InvalidInput);
+}
+
 TEST(Distance, empty_inputs_are_refused) {
   try {
     distance::compare_to_points(fixtures::square(2), {});
