@@ -17,8 +17,10 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
     std::ostringstream w;
     w.precision(4);
     w << "input boundary curve " << c << " (length " << mesh::closed_length(curves[c]) << ") has no border loop of the result within "
-      << tolerance_text;
-    if (m.mesh_loop) w << " (the nearest, loop " << *m.mesh_loop << ", is " << m.hausdorff << " away)";
+      << tolerance_text << " along " << 100 * check.follow_fraction << "% of both";
+    if (m.mesh_loop)
+      w << " (the nearest, loop " << *m.mesh_loop << ", is " << check.follow_distances[c] << " away there, "
+        << m.hausdorff << " at most)";
     else w << " (the result has no border)";
     w << ": the result closed it, tore it or moved it";
     out.push_back(w.str());
@@ -27,7 +29,8 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
     std::ostringstream w;
     w.precision(4);
     w << "border loop " << l << " of the result (length " << topology.boundary_loops[l].length
-      << ") follows no boundary curve of the input within " << tolerance_text << ": a hole the input does not have";
+      << ") follows no boundary curve of the input within " << tolerance_text << " along " << 100 * check.follow_fraction
+      << "% of both: a hole the input does not have";
     out.push_back(w.str());
   }
   return out;
@@ -40,10 +43,13 @@ nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const s
     matches.push_back({{"curve", m.reference_loop},
                        {"curve_length", mesh::closed_length(curves[m.reference_loop])},
                        {"loop", m.mesh_loop ? nlohmann::json(*m.mesh_loop) : nlohmann::json(nullptr)},
-                       {"hausdorff", m.mesh_loop ? nlohmann::json(m.hausdorff) : nlohmann::json(nullptr)}});
+                       {"hausdorff", m.mesh_loop ? nlohmann::json(m.hausdorff) : nlohmann::json(nullptr)},
+                       {"follow_distance", m.mesh_loop ? nlohmann::json(check.follow_distances[m.reference_loop])
+                                                       : nlohmann::json(nullptr)}});
   for (const std::size_t c : check.missing_curves) missing.push_back(c);
   for (const std::size_t l : check.extra_loops) extra.push_back(l);
-  return {{"tolerance", check.tolerance},        {"curves", curves.size()},
+  return {{"tolerance", check.tolerance},        {"follow_fraction", check.follow_fraction},
+          {"curves", curves.size()},
           {"loops", topology.boundary_loops.size()}, {"matches", matches},
           {"missing_curves", missing},           {"extra_loops", extra},
           {"is_consistent", check.is_consistent()}};

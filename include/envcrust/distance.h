@@ -63,4 +63,10 @@ DistanceReport compare_to_points(const TriangleMesh& mesh, const std::vector<Poi
 /// segments at 1/8 of the shorter curve's mean edge length, against segments).
 double closed_polyline_hausdorff(const Polyline& a, const Polyline& b);
 
+/// The same with the worst (1 - fraction) of each curve's length left out: the largest over
+/// both directions of the distance within which `fraction` of the points along one curve
+/// (evenly spaced) lie from the other. fraction 1 is the Hausdorff distance.
+/// @throws InvalidInput if fraction is not in (0, 1].
+double closed_polyline_partial_hausdorff(const Polyline& a, const Polyline& b, double fraction);
+
 }  // namespace envcrust::distance

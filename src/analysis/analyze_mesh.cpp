@@ -151,14 +151,23 @@ knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& opt
 }
 
 BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::vector<Polyline>& curves,
-                             double tolerance) {
+                             double tolerance, double follow_fraction) {
   if (!(tolerance > 0)) throw InvalidInput("check_boundary: tolerance must be > 0");
+  if (!(follow_fraction > 0 && follow_fraction <= 1))
+    throw InvalidInput("check_boundary: follow_fraction must be in (0, 1]");
   BoundaryCheck check;
   check.tolerance = tolerance;
+  check.follow_fraction = follow_fraction;
   check.matches = match_boundaries(topology, curves);
   std::vector<char> explained(topology.boundary_loops.size(), 0);
   for (const auto& m : check.matches) {
-    if (m.mesh_loop && m.hausdorff <= tolerance) explained[*m.mesh_loop] = 1;
+    double follow = std::numeric_limits<double>::infinity();
+    if (m.mesh_loop) {
+      follow = distance::closed_polyline_partial_hausdorff(
+          curves[m.reference_loop], topology.boundary_loops[*m.mesh_loop].polyline(topology.points), follow_fraction);
+    }
+    check.follow_distances.push_back(follow);
+    if (follow <= tolerance) explained[*m.mesh_loop] = 1;
     else check.missing_curves.push_back(m.reference_loop);
   }
   for (std::size_t l = 0; l < explained.size(); ++l)

@@ -1,5 +1,6 @@
 // Hausdorff distance between closed polylines (boundary loop matching).
 #include "envcrust/distance.h"
+#include "envcrust/errors.h"
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -35,30 +36,48 @@ using Segment = Kernel::Segment_3;
 using SegmentPrimitive = CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator>;
 using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, SegmentPrimitive>>;
 
-double directed(const std::vector<Point3>& points, const Polyline& target) {
+// Distance of each point to the nearest segment of the closed polyline `target`.
+std::vector<double> directed(const std::vector<Point3>& points, const Polyline& target) {
   std::vector<Segment> segments;
   for (std::size_t i = 0; i < target.size(); ++i) {
     const Segment s(target[i], target[(i + 1) % target.size()]);
     if (!s.is_degenerate()) segments.push_back(s);
   }
+  std::vector<double> out;
+  out.reserve(points.size());
   if (segments.empty()) {  // all points of the target coincide
-    double worst = 0.0;
-    for (const Point3& p : points) worst = std::max(worst, CGAL::squared_distance(p, target.front()));
-    return std::sqrt(worst);
+    for (const Point3& p : points) out.push_back(std::sqrt(CGAL::squared_distance(p, target.front())));
+    return out;
   }
   SegmentTree tree(segments.begin(), segments.end());
   tree.accelerate_distance_queries();
-  double worst = 0.0;
-  for (const Point3& p : points) worst = std::max(worst, tree.squared_distance(p));
-  return std::sqrt(worst);
+  for (const Point3& p : points) out.push_back(std::sqrt(tree.squared_distance(p)));
+  return out;
+}
+
+// The smallest d with at least `fraction` of the values <= d.
+double quantile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(
+      std::clamp(std::ceil(fraction * static_cast<double>(values.size())) - 1.0, 0.0,
+                 static_cast<double>(values.size() - 1)));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
 }
 
 }  // namespace
 
 double closed_polyline_hausdorff(const Polyline& a, const Polyline& b) {
+  return closed_polyline_partial_hausdorff(a, b, 1.0);
+}
+
+double closed_polyline_partial_hausdorff(const Polyline& a, const Polyline& b, double fraction) {
+  if (!(fraction > 0 && fraction <= 1))
+    throw InvalidInput("closed_polyline_partial_hausdorff: fraction must be in (0, 1]");
   if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
   const double step = std::max(1e-12, std::min(mean_edge(a), mean_edge(b)) / 8.0);
-  return std::max(directed(densify(a, step), b), directed(densify(b, step), a));
+  return std::max(quantile(directed(densify(a, step), b), fraction),
+                  quantile(directed(densify(b, step), a), fraction));
 }
 
 }  // namespace envcrust::distance

@@ -121,4 +121,29 @@ TEST(BoundaryCheck, names_the_curves_without_a_loop_and_the_loops_without_a_curv
   EXPECT_FALSE(capped.matches[0].mesh_loop.has_value());
 
   EXPECT_THROW(analysis::check_boundary(open, circles, 0.0), InvalidInput);
+  EXPECT_THROW(analysis::check_boundary(open, circles, 0.1, 0.0), InvalidInput);
+  EXPECT_THROW(analysis::check_boundary(open, circles, 0.1, 1.5), InvalidInput);
+}
+
+// A ragged scan rim: one stretch of the curve (here 3 of its 628 vertices, pulled 0.05 out,
+// five times the tolerance; 1.6% of its length) runs where no loop goes. The rim still
+// follows it along 90% of both (the default), but not along all of it (the full Hausdorff
+// distance, fraction 1).
+TEST(BoundaryCheck, a_loop_follows_a_curve_with_a_notch_along_most_of_it) {
+  const auto surface = surfaces::make_builtin("cylinder");
+  std::vector<Polyline> circles;
+  for (const auto& c : surfaces::boundary_curves(*surface, 0.01)) circles.push_back(c.polyline());
+  for (std::size_t k = 100; k < 103; ++k) {
+    const Point3& p = circles[0][k];
+    circles[0][k] = Point3(1.05 * p.x(), 1.05 * p.y(), p.z());
+  }
+  const auto open = analysis::analyze_mesh(fixtures::open_cylinder(32, 4)).topology;
+  const double tolerance = 2 * (1 - std::cos(3.141592653589793 / 32));
+  const auto ragged = analysis::check_boundary(open, circles, tolerance);
+  EXPECT_TRUE(ragged.is_consistent());
+  EXPECT_GT(ragged.matches[0].hausdorff, 0.045);
+  EXPECT_LT(ragged.follow_distances[0], tolerance);
+  const auto full = analysis::check_boundary(open, circles, tolerance, 1.0);
+  EXPECT_EQ(full.missing_curves, (std::vector<std::size_t>{0}));
+  EXPECT_EQ(full.extra_loops.size(), 1u);
 }
