@@ -207,6 +207,10 @@ class CurveSide {
         conormals_next_.push_back(v.is_corner ? v.conormal_next : v.conormal);
       }
   }
+  CurveSide(const CurveSide&) = delete;  // index_ points into boundary_
+  CurveSide& operator=(const CurveSide&) = delete;
+  [[nodiscard]] const BoundaryPolylines& polylines() const { return boundary_; }
+  [[nodiscard]] const NearestIndex& index() const { return index_; }
   [[nodiscard]] std::optional<double> level(const Point3& x) const {
     if (boundary_.points.empty()) return std::nullopt;
     const auto [i, d] = index_.nearest(x);
@@ -366,14 +370,15 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   const auto faces_of = faces_of_vertices(m);
   const auto loops = border_loops(m);
   const auto is_border = border_vertices(m, loops);
-  const BoundaryPolylines boundary = polylines_of(surface);
-  const NearestIndex index(boundary.points);
+  // Within the trim's reach (2 rho; max_move is rho) the smoothing keeps to the trimmed side.
+  const CurveSide side(surface, 2.0 * max_move);
+  const BoundaryPolylines& boundary = side.polylines();
+  const NearestIndex& index = side.index();
   std::vector<Point3> corners;
   for (const auto& c : surface.boundary)
     for (const auto& v : c.vertices)
       if (v.is_corner) corners.push_back(v.position);
-  // The trim's reach (2 rho; max_move is rho).
-  smooth_border_loops(m, faces_of, loops, corners, CurveSide(surface, 2.0 * max_move));
+  smooth_border_loops(m, faces_of, loops, corners, side);
   const std::vector<Point3> before = m.vertices;
   std::vector<std::optional<CurvePoint>> snap(m.vertices.size());
   // Flips are judged in the surface's tangent plane at the nearest curve point; a refused
