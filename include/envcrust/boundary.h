@@ -80,11 +80,13 @@ struct BoundaryOptions {
   double max_sampled_beyond = 0.25;
   /// Move each curve vertex along its conormal out to the outermost flagged samples beside it
   /// (less an allowance for their noise): the smoothed centre line of the flagged band lies
-  /// inside the band, and the true boundary beyond it. Measured on point files of 10 built-in
-  /// open surfaces (10k points, seeds 1 and 3, and 50k): the reconstruction's distance from the
-  /// true boundary (truth to mesh) then stays below 1.1 times the largest gap between the true
-  /// boundary and the nearest sample in every run, where the centre line exceeded it on the
-  /// cylinder (2.66% of the diagonal against 2.27%), the trefoil ribbon and the Moebius strip.
+  /// inside the band, and the true boundary beyond it. Measured on clean point files of 10
+  /// built-in open surfaces (19 runs: 10k points, seeds 1 and 3, and 50k): the reconstruction's
+  /// distance from the true boundary (truth to mesh) then stays below 1.1 times the largest gap
+  /// between the true boundary and the nearest sample in every run, where the centre line
+  /// exceeded it on the cylinder (2.66% of the diagonal against 2.27%), the trefoil ribbon, the
+  /// square and the Moebius strip; with 0.25% noise 2 of 16 runs stay over it (by 2% and 4%,
+  /// against 2 runs by 15% and 23% on the centre line).
   /// false: the curve stays on the centre line (mean offset about -0.8 s from the truth).
   bool fit_to_outer_samples = true;
   /// Output curve vertex spacing (arc length, absolute units, > 0); nullopt: spacing s.
