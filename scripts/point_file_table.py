@@ -30,7 +30,7 @@ def main():
     a = ap.parse_args()
     listing = subprocess.run([a.binary, "sample", "--list", "--json"], capture_output=True, text=True)
     expected = {s["name"]: s["expected"] for s in json.loads(listing.stdout)} if listing.returncode == 0 else {}
-    print(f"{'surface':16} {'chi':>4} {'loops':>5} {'m->t %':>7} {'t->m %':>7} {'bar %':>7}  verdict")
+    print(f"{'surface':16} {'rho':>7} {'chi':>4} {'loops':>5} {'m->t %':>7} {'t->m %':>7} {'bar %':>7}  verdict")
     failures = 0
     with tempfile.TemporaryDirectory() as tmp:
         for name in a.surfaces:
@@ -44,7 +44,8 @@ def main():
                 print(f"{name:16} FAILED {p.stderr.strip()[-300:]}")
                 failures += 1
                 continue
-            an = json.loads(p.stdout)["analysis"]
+            report = json.loads(p.stdout)
+            an = report["analysis"]
             m2t = 100 * an["distance"]["mesh_to_reference"]["max_rel_diag"]
             t2m = 100 * an["distance"]["reference_to_mesh"]["max_rel_diag"]
             bar = max(0.5, 110 * an["reference_boundary_gap"]["max_rel_diag"])
@@ -54,7 +55,7 @@ def main():
             problems = [w for w, bad in (("topology", not topology_ok), ("mesh->truth", m2t > 0.5),
                                          ("truth->mesh", t2m > bar)) if bad]
             failures += bool(problems)
-            print(f"{name:16} {an['euler_characteristic']:>4} {an['boundary_loops']:>5} {m2t:7.3f} {t2m:7.3f} "
+            print(f"{name:16} {report['envelope']['rho']:7.4f} {an['euler_characteristic']:>4} {an['boundary_loops']:>5} {m2t:7.3f} {t2m:7.3f} "
                   f"{bar:7.3f}  {'ok' if not problems else 'over: ' + ', '.join(problems)}", flush=True)
     print(f"{failures} of {len(a.surfaces)} outside the bars")
 

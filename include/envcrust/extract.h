@@ -54,20 +54,31 @@ struct SheetOptions {
   /// to their nearest samples' positions and normals) and border vertices onto the nearest
   /// boundary curve, when no incident face folds over in the surface's tangent plane.
   bool use_projection = true;
-  /// Samples per quadric fit on clean samples ...
-  int projection_neighbors = 6;
+  /// Samples per quadric fit on clean samples ... 6 (the quadric's unknowns) left the fit
+  /// ill-conditioned on a tessellation's regular grid, the nearest six in two rows: measured
+  /// on `sample moebius --mesh` (vertices and face centres), rho 0.15-0.18, mesh->truth
+  /// 0.6-2.4% of the diagonal with 6, 0.01-0.05% with 12, 0.006-0.009% with 24.
+  int projection_neighbors = 12;
   /// ... and on noisy ones (EnvelopeSamples::noise above `noisy_rel_rho` * rho), where the fit
   /// averages the noise over its neighbourhood: measured at 10k points, sigma 0.25% of the
   /// diagonal (seed 3), the largest mesh-to-truth distance is 0.31-0.37% with 12 samples and
   /// 0.14-0.19% with 48 (horn, trefoil and unknot ribbons, saddle, torus, cylinder); 96 gave
-  /// 0.12-0.16% where the border did not limit it, at more time. On exact samples 6 give
-  /// 0.005-0.025% (10k, the smooth built-ins). Both >= 1.
+  /// 0.12-0.16% where the border did not limit it, at more time. On exact samples 12 give
+  /// 0.005-0.031% (`reconstruct builtin:NAME`, every built-in; 6 gave 0.005-0.025%). Both >= 1.
   int noisy_projection_neighbors = 48;
   double noisy_rel_rho = 0.05;
   /// A projection or snap refused because a face would fold is retried up to this many
   /// times, after the neighbours have moved (a rough, noisy sheet unfolds as its vertices
   /// come down onto the surface). >= 0.
   int projection_retry_rounds = 4;
+  /// After the projection, faces beyond the boundary curves (offset along the nearest curve
+  /// point's outward conormal) are cut off, for vertices within this many rho of a curve;
+  /// farther ones are not judged (a part of the surface curling round far from the curve).
+  /// Sheet pieces of the rim reach up to about 2 rho out: measured on 10k-point files with
+  /// 0.25% noise, 2 left a spike 1.7 rho beyond the trefoil and unknot ribbons' rims, 0.115
+  /// from the curve (mesh->truth 1.9% and 2.1% of the diagonal); 3 cut both (0.42%, 0.34%).
+  /// Range > 0.
+  double trim_reach_rel_rho = 3.0;
   /// For surfaces known to be orientable (scans of solid objects): where the sheet comes out
   /// non-orientable (it crosses itself where a part is thinner than 2 rho or sampled too
   /// sparsely, and the cleaning joins the two sides with a twist), remove the faces within

@@ -44,7 +44,7 @@ struct ReconstructOptions {
   /// Check a uniform-rho run (Method::Envelope, Extraction::Sheet) and, when it fails, run
   /// again with adaptive rho (small where M is thin, large where it is sparse) and keep the
   /// run with fewer defects (RunDefects::count; ReconstructResult::adaptive_retry). It fails
-  /// when its result is no manifold, has a border loop that follows no boundary curve of the
+  /// when its result is empty or no manifold, has a border loop that follows no boundary curve of the
   /// input within 2 rho (a hole where the input is too sparse for one rho), or more handles
   /// and cross-caps than max_genus; without max_genus, any when rho had to be raised above
   /// half the reach to bridge the input's gaps (the envelope may fold into handles there).

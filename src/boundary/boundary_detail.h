@@ -133,6 +133,12 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
 /// (curve_frames.cpp).
 Polyline resample_closed(const Polyline& curve, double spacing);
 
+/// The closed polyline without the vertices at which it turns back (turn angle over 90
+/// degrees), removed one at a time until none is left or 3 vertices remain: a fit that moves
+/// neighbouring vertices by different amounts across a bend can fold the curve onto itself,
+/// and a fold's reversed tangent flips the conormal there (curve_frames.cpp).
+Polyline remove_switchbacks(const Polyline& curve);
+
 /// Cyclic moving average over 2 h + 1 vertices.
 Polyline smooth_closed(const Polyline& curve, int half_window);
 

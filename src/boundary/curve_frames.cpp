@@ -28,6 +28,27 @@ Polyline resample_closed(const Polyline& curve, double spacing) {
   return out;
 }
 
+Polyline remove_switchbacks(const Polyline& curve) {
+  Polyline out = curve;
+  std::size_t i = 0, unchanged = 0;
+  // Walk around the loop until a full turn passes without a removal.
+  while (out.size() > 3 && unchanged < out.size()) {
+    const std::size_t m = out.size();
+    i %= m;
+    const Point3& prev = out[(i + m - 1) % m];
+    const Point3& next = out[(i + 1) % m];
+    if (dot(out[i] - prev, next - out[i]) < 0) {
+      out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+      i = (i + m - 2) % (m - 1);  // the predecessor now turns differently: look at it again
+      unchanged = 0;
+    } else {
+      ++i;
+      ++unchanged;
+    }
+  }
+  return out;
+}
+
 Polyline smooth_closed(const Polyline& curve, int half_window) {
   const std::size_t m = curve.size();
   if (half_window <= 0 || m < 3) return curve;

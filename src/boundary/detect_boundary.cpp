@@ -212,7 +212,7 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
       detail::fit_to_outer_samples(fitted, points, candidates, component, s, kMaxOuterFit * s);
       curve = fitted.polyline();
     }
-    curve = detail::resample_closed(curve, output_spacing);
+    curve = detail::resample_closed(detail::remove_switchbacks(curve), output_spacing);
     const double local = local_spacing(points, index, component);
     const double width = local > 0 ? loop_width(curve) / local : 0.0;
     if (drop_small && options.min_loop_width > 0 && local > 0 && width < options.min_loop_width) {

@@ -69,6 +69,9 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
     throw InvalidInput("reach: " + std::to_string(samples.points.size()) + " points but " +
                        std::to_string(samples.normals.size()) + " normals");
   if (samples.points.size() < 3) throw InvalidInput("reach: need at least 3 samples");
+  if (!(options.min_chord_rel_value >= 0.0 && options.min_chord_rel_value <= 2.0))
+    throw InvalidOptions("ReachOptions::min_chord_rel_value must be in [0, 2] (got " +
+                         std::to_string(options.min_chord_rel_value) + ")");
   if (!(options.quantile >= 0.0 && options.quantile < 1.0))
     throw InvalidOptions("ReachOptions::quantile must be in [0, 1) (got " +
                          std::to_string(options.quantile) + ")");
@@ -90,6 +93,7 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
         const double d = distance_to_tangent(pts[i], v);
         if (d <= 0.0) continue;
         const double value = len2 / (2.0 * d);
+        if (value * options.min_chord_rel_value * value * options.min_chord_rel_value > len2) continue;
         best[i] = std::min(best[i], value);
         // A pair is "far" when it spans more than its own Federer value: a chord across a
         // bottleneck (|v| ~ 2R), not two neighbours on a curved sheet (|v| << R).
@@ -99,9 +103,7 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
     }
   });
   auto quantile_of = [&](std::vector<double> values) {
-    values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
-                 values.end());
-    if (values.empty()) return std::numeric_limits<double>::infinity();
+    // Unconstrained points (infinite values) stay in: they are the flat, convex part.
     const auto k = static_cast<std::size_t>(options.quantile * static_cast<double>(values.size() - 1));
     std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
     return values[k];

@@ -36,6 +36,7 @@ void validate(const SheetOptions& o) {
   if (!(o.noisy_projection_neighbors >= 1)) fail("noisy_projection_neighbors", o.noisy_projection_neighbors);
   if (!(o.noisy_rel_rho >= 0)) fail("noisy_rel_rho", o.noisy_rel_rho);
   if (!(o.projection_retry_rounds >= 0)) fail("projection_retry_rounds", o.projection_retry_rounds);
+  if (!(o.trim_reach_rel_rho > 0)) fail("trim_reach_rel_rho", o.trim_reach_rel_rho);
   if (!(o.max_face_distance_rel_rho >= 0)) fail("max_face_distance_rel_rho", o.max_face_distance_rel_rho);
   if (!(o.fill_loops_shorter_than_rel_rho >= 0)) fail("fill_loops_shorter_than_rel_rho", o.fill_loops_shorter_than_rel_rho);
   if (!(o.orientable_cut_rel_rho > 0)) fail("orientable_cut_rel_rho", o.orientable_cut_rel_rho);
@@ -139,7 +140,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
         sheet, surface, samples, envelope.rho,
         static_cast<unsigned>(is_noisy ? options.noisy_projection_neighbors : options.projection_neighbors),
         static_cast<unsigned>(options.projection_retry_rounds));
-    trim_beyond_boundary(sheet, surface, 2.0 * envelope.rho);
+    trim_beyond_boundary(sheet, surface, options.trim_reach_rel_rho * envelope.rho);
     // Trimming cuts off crumbs and leaves pinholes where single faces reached past the
     // boundary.
     result.stats.components_dropped += filter_components(

@@ -132,7 +132,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   once.remesh.reset();
   ReconstructResult out = reconstruct_once(samples, once, progress);
   if (options.use_adaptive_retry && options.method == Method::Envelope && options.extraction == Extraction::Sheet &&
-      options.envelope.rho_mode == envelope::RhoMode::Uniform && !out.mesh.triangles.empty()) {
+      options.envelope.rho_mode == envelope::RhoMode::Uniform) {
     AdaptiveRetry retry;
     retry.max_genus = options.max_genus;
     retry.uniform = defects_of(out, samples);

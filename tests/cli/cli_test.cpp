@@ -705,7 +705,9 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   EXPECT_EQ(a["euler_characteristic"], 0);
   EXPECT_EQ(a["boundary_loops"], 1);
   EXPECT_EQ(a["is_orientable"], false);
-  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+  // The mesh's vertices and face centres lie on a regular grid: a quadric fitted to the nearest
+  // six of them was ill-conditioned (0.6-2.4% of the diagonal off); twelve read 0.01-0.05%.
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.001);
   // The input mesh is non-orientable itself: no orientation cut by default, and no hint.
   EXPECT_EQ(j["input_is_orientable"], false);
   EXPECT_EQ(j["sheet"]["cut_to_orientable"], false);

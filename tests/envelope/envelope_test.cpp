@@ -48,6 +48,48 @@ TEST(Reach, trefoil_ribbon_reach_is_limited_by_the_strand_gap) {
   EXPECT_NEAR(r.bottleneck, r.reach, 1e-12);
 }
 
+TEST(Reach, wiggles_of_an_estimated_boundary_curve_do_not_set_the_reach) {
+  // The cylinder's rims moved out along their conormals by a (1 + sin(2 pi arc / lambda)), as
+  // a boundary detected on a dense point file wiggles (out: samples beyond a curve are a true
+  // bound on the reach), with the tangents and conormals of the wiggly curve: the wiggle's own
+  // curvature radius is lambda^2 / (4 pi^2 a) = 0.46, while the rims' true one is 1. Short
+  // chords of the wiggle (L < 8 a) are the only ones that read it.
+  auto samples = exact_samples("cylinder", 5000);
+  const double a = 0.005, lambda = 0.3;
+  for (auto& curve : samples.boundary) {
+    auto& v = curve.vertices;
+    const std::size_t m = v.size();
+    double arc = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+      if (k > 0) arc += std::sqrt(CGAL::squared_distance(v[k - 1].position, v[k].position));
+      v[k].position = v[k].position + a * (1 + std::sin(2 * std::acos(-1.0) * arc / lambda)) * v[k].conormal;
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+      Vector3 t = v[(k + 1) % m].position - v[(k + m - 1) % m].position;
+      t = t / std::sqrt(t.squared_length());
+      Vector3 c = CGAL::cross_product(t, v[k].normal);
+      if (c * v[k].conormal < 0) c = -c;
+      v[k].tangent = t;
+      v[k].conormal = c / std::sqrt(c.squared_length());
+    }
+  }
+  const auto r = envelope::estimate_reach(samples);
+  EXPECT_GT(r.reach, 0.9);
+  EXPECT_LT(r.reach, 1.03);
+  envelope::ReachOptions every_chord;
+  every_chord.min_chord_rel_value = 0.0;
+  EXPECT_LT(envelope::estimate_reach(samples, every_chord).reach, 0.6);
+}
+
+TEST(Reach, refuses_a_chord_bound_out_of_range) {
+  const auto samples = exact_samples("sphere", 100);
+  envelope::ReachOptions o;
+  o.min_chord_rel_value = -0.5;
+  EXPECT_THROW(envelope::estimate_reach(samples, o), InvalidOptions);
+  o.min_chord_rel_value = 2.5;
+  EXPECT_THROW(envelope::estimate_reach(samples, o), InvalidOptions);
+}
+
 TEST(Envelope, cylinder_samples_lie_on_the_envelope_and_cover_it) {
   const auto s = exact_samples("cylinder", 10000);
   envelope::EnvelopeOptions o;
