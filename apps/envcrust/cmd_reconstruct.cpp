@@ -257,7 +257,8 @@ void choose_adaptive_retry(ReconstructCommand& cmd, const LoadedSurface& loaded)
 }
 
 std::string describe(const pipeline::RunDefects& d, const std::optional<long>& max_genus) {
-  std::string out = d.genus ? "genus " + std::to_string(*d.genus) : std::string("no manifold");
+  if (!d.genus) return d.is_empty ? "no faces" : "no manifold";
+  std::string out = "genus " + std::to_string(*d.genus);
   auto count = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
   if (d.extra_loops > 0) out += ", " + count(d.extra_loops, " hole the input has not", " holes the input has not");
   if (d.missing_curves > 0) out += ", " + count(d.missing_curves, " input curve not followed", " input curves not followed");
@@ -272,7 +273,8 @@ std::string describe(const pipeline::AdaptiveRetry& retry) {
 }
 
 nlohmann::json defects_json(const pipeline::RunDefects& d, const std::optional<long>& max_genus) {
-  return {{"genus", d.genus ? nlohmann::json(*d.genus) : nlohmann::json(nullptr)},
+  return {{"empty", d.is_empty},
+          {"genus", d.genus ? nlohmann::json(*d.genus) : nlohmann::json(nullptr)},
           {"extra_loops", d.extra_loops},
           {"missing_curves", d.missing_curves},
           {"defects", d.genus ? nlohmann::json(d.count(max_genus)) : nlohmann::json(nullptr)}};

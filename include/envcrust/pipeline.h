@@ -57,6 +57,7 @@ struct ReconstructOptions {
 
 /// What is wrong with one run's result, by the checks the adaptive retry makes.
 struct RunDefects {
+  bool is_empty = false;           ///< the run gave no faces (genus unset)
   std::optional<long> genus;       ///< handles and cross-caps over components; unset: no manifold
   std::size_t missing_curves = 0;  ///< input boundary curves no border loop follows within 2 rho
   std::size_t extra_loops = 0;     ///< border loops that follow no input boundary curve within 2 rho

@@ -93,7 +93,9 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
         const double d = distance_to_tangent(pts[i], v);
         if (d <= 0.0) continue;
         const double value = len2 / (2.0 * d);
-        if (value * options.min_chord_rel_value * value * options.min_chord_rel_value > len2) continue;
+        // A chord shorter than min_chord_rel_value times its value reads noise, not curvature.
+        const double min_chord = options.min_chord_rel_value * value;
+        if (min_chord * min_chord > len2) continue;
         best[i] = std::min(best[i], value);
         // A pair is "far" when it spans more than its own Federer value: a chord across a
         // bottleneck (|v| ~ 2R), not two neighbours on a curved sheet (|v| << R).

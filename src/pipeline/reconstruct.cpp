@@ -91,7 +91,8 @@ ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, cons
 // The checks of one run; its topology is kept in run.topology for the report.
 RunDefects defects_of(ReconstructResult& run, const envelope::SurfaceSamples& samples) {
   RunDefects d;
-  if (run.mesh.triangles.empty()) return d;
+  d.is_empty = run.mesh.triangles.empty();
+  if (d.is_empty) return d;
   const topology::MeshTopology& t = run.topology.emplace(topology::analyze_topology(run.mesh));
   d.genus = topology::total_genus(t);
   const analysis::BoundaryCheck check = check_result_boundary(t, samples, run.envelope.rho);
