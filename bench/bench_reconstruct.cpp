@@ -1,10 +1,18 @@
 // envcrust_bench_reconstruct: time of the envelope reconstruction of built-in surfaces, as a
 // ratio to a bare CGAL Delaunay triangulation of the same envelope samples (same run).
 //   envcrust_bench_reconstruct [--sizes 10000,100000,1000000] [--surfaces trefoil-ribbon,moebius]
+//                              [--point-clouds]
 // Peak MB: the largest resident size during the reconstruction (VmHWM, reset before it).
+// --point-clouds: the samples lose their exact normals and boundary, which are estimated
+// (PCA normal lines, detected boundary; timed apart) and reconstructed with the settings
+// `reconstruct` uses for a point file: 5th-percentile reach, handle cuts at 1.5 rho, cuts at
+// short reversing loops, the adaptive retry.
 #include "peak_memory.h"
 
+#include "envcrust/boundary.h"
+#include "envcrust/extract.h"
 #include "envcrust/heap.h"
+#include "envcrust/normals.h"
 #include "envcrust/pipeline.h"
 #include "envcrust/surfaces.h"
 
@@ -39,12 +47,24 @@ int main(int argc, char** argv) {
   io::reuse_freed_memory();  // as the CLI's reconstruct does
   std::vector<std::string> sizes = {"10000", "100000", "1000000"};
   std::vector<std::string> names = {"trefoil-ribbon", "moebius", "cylinder"};
-  for (int i = 1; i + 1 < argc; ++i) {
+  bool point_clouds = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--point-clouds") == 0) point_clouds = true;
+    if (i + 1 == argc) break;
     if (std::strcmp(argv[i], "--sizes") == 0) sizes = split(argv[i + 1]);
     if (std::strcmp(argv[i], "--surfaces") == 0) names = split(argv[i + 1]);
   }
-  std::printf("| surface | input points | envelope samples | envelope s | sheet s | total s | bare DT s | ratio | peak MB |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  pipeline::ReconstructOptions options;
+  if (point_clouds) {
+    options.envelope.reach_quantile = 0.05;
+    options.sheet.cut_handles_rel_rho = 1.5;
+    options.sheet.cut_to_orientable = true;
+    options.sheet.orientable_max_twist_loop_rel_rho = extract::kTwistMinLoopRelRho;
+    options.use_adaptive_retry = true;
+  }
+  std::printf("| surface | input points | normals s | boundary s | envelope samples | envelope s | sheet s | total s | "
+              "bare DT s | ratio | peak MB |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& name : names) {
     const auto surface = surfaces::make_builtin(name);
     for (const auto& size : sizes) {
@@ -54,18 +74,27 @@ int main(int argc, char** argv) {
       const PointSet ps = surfaces::sample_surface(*surface, o);
       envelope::SurfaceSamples samples{ps.points, ps.normals,
                                        surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface))};
+      double normals_s = 0.0, boundary_s = 0.0;
       bench::take_peak_mb();  // the peak below is the reconstruction's, sampling excluded
       auto t0 = std::chrono::steady_clock::now();
-      const auto result = pipeline::reconstruct(samples);
-      const double total = seconds_since(t0);
+      if (point_clouds) {
+        samples.normals = normals::estimate_normal_lines(samples.points);
+        normals_s = seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
+        samples.boundary = boundary::detect_boundary(samples.points, samples.normals).curves;
+        boundary_s = seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
+      }
+      const auto result = pipeline::reconstruct(samples, options);
+      const double total = seconds_since(t0) + normals_s + boundary_s;
       const double peak = bench::take_peak_mb();
       const auto points = result.envelope.points();
       t0 = std::chrono::steady_clock::now();
       CGAL::Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
       const double bare = seconds_since(t0);
-      std::printf("| %s | %s | %zu | %.2f | %.2f | %.2f | %.2f | %.1f× | %.0f |\n", name.c_str(), size.c_str(),
-                  points.size(), result.seconds.envelope, result.seconds.extraction, total, bare, total / bare,
-                  peak);
+      std::printf("| %s | %s | %.2f | %.2f | %zu | %.2f | %.2f | %.2f | %.2f | %.1f× | %.0f |\n", name.c_str(),
+                  size.c_str(), normals_s, boundary_s, points.size(), result.seconds.envelope,
+                  result.seconds.extraction, total, bare, total / bare, peak);
       std::fflush(stdout);
     }
   }

