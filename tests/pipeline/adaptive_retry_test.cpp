@@ -65,6 +65,27 @@ TEST(AdaptiveRetry, RunsOnceWhenTheCheckPasses) {
   EXPECT_FALSE(result.adaptive_retry.has_value());
 }
 
+// 1,000 samples of the cylinder with rho 0.02, a fifth of what their gaps need: the uniform
+// envelope falls apart and the run comes out empty (which the retry once skipped, so the CLI
+// reported the empty result); adaptive rho, raised where the samples are sparse, gives the
+// annulus and is kept.
+TEST(AdaptiveRetry, RetriesAnEmptyUniformRun) {
+  const auto samples = fixtures::builtin_samples("cylinder", 1000);
+  pipeline::ReconstructOptions options;
+  options.use_adaptive_retry = true;
+  options.envelope.rho = 0.02;
+  const auto result = pipeline::reconstruct(samples, options);
+  ASSERT_TRUE(result.adaptive_retry.has_value());
+  const auto& retry = *result.adaptive_retry;
+  EXPECT_TRUE(retry.uniform.is_empty);
+  EXPECT_FALSE(retry.uniform.genus.has_value());
+  EXPECT_FALSE(retry.adaptive.is_empty);
+  EXPECT_TRUE(retry.kept_adaptive);
+  const auto topology = topology::analyze_topology(result.mesh);
+  EXPECT_EQ(topology.euler_characteristic, 0);
+  EXPECT_EQ(topology.boundary_loops.size(), 2u);
+}
+
 // A cylinder whose boundary curves are given as they are: its border loops follow them.
 // With one curve left out, the result's loop there follows no given curve (a hole the input
 // has not), which fails the check.
