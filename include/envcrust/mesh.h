@@ -50,6 +50,12 @@ std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh);
 /// shared by more than two faces. Returns the number of faces dropped; order is kept.
 std::size_t remove_duplicate_faces(TriangleMesh& mesh);
 
+/// The indices of `points` along a Hilbert curve (CGAL's hilbert_sort, deterministic). Loops
+/// of neighbour queries in this order stay in one part of a kd-tree: over a point file in
+/// random order each query missed the cache (1M points: normal fits 3.9 -> 2.0 s, angle-gap
+/// tests 5.2 -> 2.9 s on 2 cores).
+std::vector<std::size_t> hilbert_order(const std::vector<Point3>& points);
+
 /// A mesh in an order that keeps neighbours close in memory, and where its vertices came from.
 struct SpatiallyOrdered {
   TriangleMesh mesh;

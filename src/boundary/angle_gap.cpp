@@ -2,15 +2,13 @@
 // plane, with the outward conormal from the neighbour centroid checked against the gap bisector.
 #include "boundary_detail.h"
 
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/property_map.h>
+#include "envcrust/mesh.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <numbers>
-#include <numeric>
 
 namespace envcrust::boundary::detail {
 namespace {
@@ -77,14 +75,9 @@ Candidates angle_gap_candidates(const std::vector<Point3>& points,
       std::min(options.gap_threshold_deg, options.weak_gap_threshold_deg) * std::numbers::pi / 180.0;
   const double min_cos = std::cos(options.conormal_agreement_deg * std::numbers::pi / 180.0);
   const auto k = static_cast<std::size_t>(options.neighbors) + 1;  // the point itself comes back
-  // Queries along a Hilbert curve: consecutive ones visit the same part of the tree (a point
-  // file in random order made every query a cache miss). Each test is independent of the
+  // Queries along a Hilbert curve (mesh::hilbert_order); each test is independent of the
   // order, so the result is the same.
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  using Map = CGAL::Pointer_property_map<Point3>::const_type;
-  CGAL::hilbert_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(points)));
+  const std::vector<std::size_t> order = mesh::hilbert_order(points);
   std::vector<PointTest> tests(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
                     [&](const tbb::blocked_range<std::size_t>& range) {

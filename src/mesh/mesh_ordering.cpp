@@ -1,4 +1,5 @@
-// order_spatially: Hilbert order of the vertices, faces following their first vertex.
+// hilbert_order of points; order_spatially: Hilbert order of the vertices, faces following
+// their first vertex.
 #include "envcrust/mesh.h"
 
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -10,13 +11,18 @@
 
 namespace envcrust::mesh {
 
-SpatiallyOrdered order_spatially(const TriangleMesh& mesh) {
-  SpatiallyOrdered out;
-  std::vector<std::size_t> order(mesh.vertices.size());  // the property map's key type
+std::vector<std::size_t> hilbert_order(const std::vector<Point3>& points) {
+  std::vector<std::size_t> order(points.size());  // the property map's key type
   std::iota(order.begin(), order.end(), std::size_t{0});
   using Map = CGAL::Pointer_property_map<Point3>::const_type;
   CGAL::hilbert_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(mesh.vertices)));
+                     CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(points)));
+  return order;
+}
+
+SpatiallyOrdered order_spatially(const TriangleMesh& mesh) {
+  SpatiallyOrdered out;
+  const std::vector<std::size_t> order = hilbert_order(mesh.vertices);
   out.old_vertex.assign(order.begin(), order.end());
   std::vector<Index> new_vertex(mesh.vertices.size());
   out.mesh.vertices.reserve(mesh.vertices.size());

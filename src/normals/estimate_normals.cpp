@@ -4,16 +4,13 @@
 #include "input_checks.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/hilbert_sort.h>
 #include <CGAL/jet_estimate_normals.h>
 #include <CGAL/pca_estimate_normals.h>
-#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <utility>
 
 namespace envcrust::normals {
@@ -46,15 +43,9 @@ std::vector<Vector3> estimate_normal_lines(const std::vector<Point3>& points,
     throw DegenerateInput("normal estimation needs at least 3 points (got " +
                           std::to_string(points.size()) + ")");
   }
-  // The fits run along a Hilbert curve, so that consecutive neighbour queries visit the same
-  // part of CGAL's tree (a point file in random order made each a cache miss: 1M random
-  // points of the cylinder, 3.9 s in input order, 2.0 s in this one, on 2 cores); the normals
-  // go back to the input order below.
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  using Map = CGAL::Pointer_property_map<Point3>::const_type;
-  CGAL::hilbert_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(points)));
+  // The fits run along a Hilbert curve (mesh::hilbert_order: consecutive neighbour queries
+  // visit the same part of CGAL's tree); the normals go back to the input order below.
+  const std::vector<std::size_t> order = mesh::hilbert_order(points);
   std::vector<PointNormal> data;
   data.reserve(points.size());
   for (const std::size_t i : order) data.emplace_back(points[i], Vector3(0, 0, 0));
