@@ -5,8 +5,7 @@
 // Peak MB: the largest resident size during the reconstruction (VmHWM, reset before it).
 // --point-clouds: the samples lose their exact normals and boundary, which are estimated
 // (PCA normal lines, detected boundary; timed apart) and reconstructed with the settings
-// `reconstruct` uses for a point file: 5th-percentile reach, handle cuts at 1.5 rho, cuts at
-// short reversing loops, the adaptive retry.
+// `reconstruct` uses for a point file (pipeline::options_for_input).
 #include "peak_memory.h"
 
 #include "envcrust/boundary.h"
@@ -54,14 +53,10 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--sizes") == 0) sizes = split(argv[i + 1]);
     if (std::strcmp(argv[i], "--surfaces") == 0) names = split(argv[i + 1]);
   }
-  pipeline::ReconstructOptions options;
-  if (point_clouds) {
-    options.envelope.reach_quantile = 0.05;
-    options.sheet.cut_handles_rel_rho = 1.5;
-    options.sheet.cut_to_orientable = true;
-    options.sheet.orientable_max_twist_loop_rel_rho = extract::kTwistMinLoopRelRho;
-    options.use_adaptive_retry = true;
-  }
+  pipeline::InputKind input;  // as `reconstruct` runs builtin:NAME, or a point file without normals
+  input.is_builtin = !point_clouds;
+  input.are_normals_estimated = point_clouds;
+  const auto options = pipeline::options_for_input(input);
   std::printf("| surface | input points | normals s | boundary s | envelope samples | envelope s | sheet s | total s | "
               "bare DT s | ratio | peak MB |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");

@@ -39,14 +39,12 @@ struct ReconstructCommand {
   bool use_remesh = false;
   remesh::RemeshOptions remesh;  // used with --remesh
   std::string orientable = "auto";    // --orientable: auto, yes or no
-  std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_sheet_cuts)
+  std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_input_options)
   BuiltinSampling sampling;
   pipeline::ReconstructOptions options;
   CommonFlags common;
 };
 
-// --cut-handles for point files and meshes unless given: the radius that served the scans.
-constexpr double kScanCutHandlesRelRho = 1.5;
 // Detected boundary loops narrower than this many local spacings (and than half the widest)
 // are named in a hint: --boundary-min-width drops them if they are sampling gaps. A gap
 // narrower than 3 spacings is no unsampled stripe (its loop is an arc closed on itself).
@@ -62,12 +60,6 @@ std::optional<double> parse_rho(const std::string& text) {
   } catch (const std::exception&) {
   }
   throw UsageError("--rho must be 'auto' or a positive number (got '" + text + "')");
-}
-
-// Estimated normals scatter the per-sample reach values: take the 5th percentile
-// (METHOD.md §2).
-void use_estimated_normal_settings(const LoadedSurface&, envelope::EnvelopeOptions& options) {
-  options.reach_quantile = 0.05;
 }
 
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
@@ -194,7 +186,7 @@ std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
 std::vector<std::string> scan_hints(const LoadedSurface& loaded, const ReconstructCommand& cmd,
                                     const analysis::AnalysisReport& report) {
   const auto& sheet = cmd.options.sheet;
-  if (loaded.source == "builtin" || cmd.options.method != pipeline::Method::Envelope ||
+  if (loaded.kind.is_builtin || cmd.options.method != pipeline::Method::Envelope ||
       cmd.options.extraction != pipeline::Extraction::Sheet)
     return {};
   long cross_caps = 0, handles = 0;
@@ -204,14 +196,14 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
   }
   std::vector<std::string> hints;
   if (cross_caps > 0 && !(sheet.cut_to_orientable && std::isinf(sheet.orientable_max_twist_loop_rel_rho)) &&
-      loaded.is_orientable.value_or(true))
+      loaded.kind.is_orientable.value_or(true))
     hints.push_back("the result is non-orientable (" + std::to_string(cross_caps) + " cross-cap" +
                     (cross_caps == 1 ? "" : "s") + "): if the input scans an orientable surface, --orientable removes " +
                     (cross_caps == 1 ? "it" : "them") + " and closes the holes");
   std::ostringstream h;
   if (handles > 0 && sheet.cut_handles_rel_rho == 0)
     h << "the result has genus " << handles << ": if the scanned surface has no handles at the scale of rho, "
-      << "--cut-handles " << kScanCutHandlesRelRho << " removes them and closes the holes";
+      << "--cut-handles " << pipeline::kScanCutHandlesRelRho << " removes them and closes the holes";
   else if (handles > 0 && cross_caps == 0)
     h << "the result has genus " << handles << " after the cuts at " << sheet.cut_handles_rel_rho
       << " rho: if the scanned surface has fewer handles, --cut-handles " << 2 * sheet.cut_handles_rel_rho
@@ -221,39 +213,26 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
   return hints;
 }
 
-// The topology cuts of the medial sheet, as asked or by default for the input: a scan (point
-// file or mesh) is cut where the sheet is not a disc at 1.5 rho (at rho <= reach/2 every such
-// ball of the true surface is a disc, so what fails there is a defect), and cut to an
-// orientable sheet when the input is an orientable mesh; built-in samples are left as the
-// method makes them (the experiments measure the method itself).
-void choose_sheet_cuts(ReconstructCommand& cmd, const LoadedSurface& loaded) {
+// The options for the loaded input (pipeline::options_for_input: a scan's sheet cut at handles
+// and to an orientable sheet, the 5th-percentile reach of estimated normals, the adaptive
+// retry with automatic rho), then what was asked: --orientable yes/no, --cut-handles,
+// --no-adaptive-retry. The cuts apply to the medial sheet only.
+void choose_input_options(ReconstructCommand& cmd, const LoadedSurface& loaded) {
+  cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);
   auto& sheet = cmd.options.sheet;
-  const bool is_scan = loaded.source != "builtin";
-  // --orientable=auto: an orientable mesh is cut at every seam, a point file (which does not
-  // say) only at the defects, the seams that a reversing loop shorter than a twist of the
-  // surface could be crosses; a non-orientable mesh and a built-in surface are not cut.
-  const bool point_file = is_scan && !loaded.is_orientable;
-  sheet.cut_to_orientable =
-      cmd.orientable == "yes" || (cmd.orientable == "auto" && (loaded.is_orientable.value_or(false) || point_file));
-  sheet.orientable_max_twist_loop_rel_rho = cmd.orientable == "auto" && point_file
-                                                ? extract::kTwistMinLoopRelRho
-                                                : std::numeric_limits<double>::infinity();
-  sheet.cut_handles_rel_rho = cmd.cut_handles.value_or(is_scan ? kScanCutHandlesRelRho : 0.0);
+  if (cmd.orientable == "yes") {
+    sheet.cut_to_orientable = true;
+    sheet.orientable_max_twist_loop_rel_rho = std::numeric_limits<double>::infinity();
+  } else if (cmd.orientable == "no") {
+    sheet.cut_to_orientable = false;
+  }
+  if (cmd.cut_handles) sheet.cut_handles_rel_rho = *cmd.cut_handles;
+  if (cmd.no_adaptive_retry) cmd.options.use_adaptive_retry = false;
   if (cmd.options.method == pipeline::Method::Envelope && cmd.options.extraction == pipeline::Extraction::Sheet) return;
   if (cmd.orientable == "yes" || cmd.cut_handles.value_or(0) > 0)
     throw UsageError("--orientable and --cut-handles apply to the medial sheet (--method envelope --extract sheet)");
   sheet.cut_to_orientable = false;
   sheet.cut_handles_rel_rho = 0;
-}
-
-// With the automatic rho, a uniform run whose result has holes the input has not, or more
-// handles and cross-caps than a mesh input's own genus, runs again with adaptive rho
-// (ReconstructOptions::use_adaptive_retry; the lion head as a mesh: genus 8 for a disc with
-// the uniform rho; as points: a hole along its sparse neck). Not when rho or its mode was
-// given, or with --no-adaptive-retry.
-void choose_adaptive_retry(ReconstructCommand& cmd, const LoadedSurface& loaded) {
-  cmd.options.use_adaptive_retry = !cmd.no_adaptive_retry && cmd.rho == "auto";
-  if (cmd.options.use_adaptive_retry) cmd.options.max_genus = loaded.genus;
 }
 
 std::string describe(const pipeline::RunDefects& d, const std::optional<long>& max_genus) {
@@ -295,12 +274,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
   cmd.options.envelope.seed = cmd.sampling.seed;
   if (cmd.use_remesh) cmd.options.remesh = cmd.remesh;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
-  choose_sheet_cuts(cmd, loaded);
-  // Estimated normals scatter the per-sample reach values: take the 5th percentile.
-  if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
+  choose_input_options(cmd, loaded);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
-  choose_adaptive_retry(cmd, loaded);
   auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
   const auto& retry = result.adaptive_retry;
   if (result.mesh.triangles.empty()) {
@@ -342,8 +318,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
   }
   j["seconds"] = {{"envelope", result.seconds.envelope}, {"power_crust", result.seconds.power_crust},
                   {"extraction", result.seconds.extraction}, {"remesh", result.seconds.remesh}};
-  if (loaded.is_orientable) j["input_is_orientable"] = *loaded.is_orientable;
-  if (loaded.genus) j["input_genus"] = *loaded.genus;
+  if (loaded.kind.is_orientable) j["input_is_orientable"] = *loaded.kind.is_orientable;
+  if (loaded.kind.genus) j["input_genus"] = *loaded.kind.genus;
   if (retry) {
     j["adaptive_retry"] = {{"max_genus", retry->max_genus ? nlohmann::json(*retry->max_genus) : nlohmann::json(nullptr)},
                            {"uniform", defects_json(retry->uniform, retry->max_genus)},
@@ -485,7 +461,7 @@ void run_envelope(ReconstructCommand& cmd) {
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
-  if (loaded.are_normals_estimated) use_estimated_normal_settings(loaded, cmd.options.envelope);
+  cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);  // the envelope's settings
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   const auto env = envelope::sample_envelope(loaded.samples, cmd.options.envelope);
   PointSet points;

@@ -24,6 +24,7 @@ namespace {
 void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface& out) {
   if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
   out.source = "mesh";
+  out.kind.is_builtin = false;
   if (const std::size_t dropped = mesh::remove_duplicate_faces(mesh); dropped > 0)
     out.notes.push_back(std::to_string(dropped) + " repeated or degenerate faces dropped");
   if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
@@ -34,8 +35,8 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
     throw InvalidInput(spec + ": " + e.what());
   }
   const auto mesh_topology = topology::analyze_topology(mesh);  // a manifold, checked above
-  out.is_orientable = mesh_topology.is_orientable;
-  out.genus = topology::total_genus(mesh_topology);
+  out.kind.is_orientable = mesh_topology.is_orientable;
+  out.kind.genus = topology::total_genus(mesh_topology);
   std::vector<bool> used(mesh.vertices.size(), false);
   for (const auto& t : mesh.triangles)
     for (Index v : t) used[v] = true;
@@ -150,12 +151,13 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   }
   PointSet points = usable_points(io::read_points(spec), spec, out.notes);
   out.source = "points";
+  out.kind.is_builtin = false;
   if (points.has_normals()) {
     out.notes.push_back("normal lines from the file");
   } else {
     normals::NormalOptions o;
     points.normals = normals::estimate_normal_lines(points.points, o);
-    out.are_normals_estimated = true;
+    out.kind.are_normals_estimated = true;
     out.notes.push_back("normal lines estimated by PCA over " + std::to_string(o.neighbors) + " neighbours");
   }
   out.samples.points = std::move(points.points);

@@ -4,6 +4,7 @@
 
 #include "envcrust/boundary.h"
 #include "envcrust/envelope.h"
+#include "envcrust/pipeline.h"
 
 #include <cstdint>
 #include <optional>
@@ -30,13 +31,10 @@ struct BuiltinSampling {
 struct LoadedSurface {
   envelope::SurfaceSamples samples;
   std::string source;                 ///< "builtin", "points", "mesh"
-  bool are_normals_estimated = false; ///< normals came from PCA, not from the data
-  /// Whether the input itself is orientable, where it says: a mesh (every component
-  /// orientable); unknown for point files and built-in samples.
-  std::optional<bool> is_orientable;
-  /// A mesh input: its genus, summed over components (handles and cross-caps). The envelope
-  /// should not add any (reconstruct retries with adaptive rho when it does).
-  std::optional<long> genus;
+  /// What reconstruct's defaults depend on (pipeline::options_for_input): built-in or not,
+  /// normals estimated by PCA, and a mesh's own orientability and genus (handles and
+  /// cross-caps summed over components; the envelope should not add any).
+  pipeline::InputKind kind;
   /// Point files whose boundary was detected: each curve's width in local spacings
   /// (BoundaryDetection::loop_widths), and the --boundary-min-width the detection used.
   std::vector<double> detected_loop_widths;

@@ -55,6 +55,28 @@ struct ReconstructOptions {
   std::optional<long> max_genus;
 };
 
+/// Where the samples came from: reconstruct's defaults (options_for_input) depend on it.
+struct InputKind {
+  bool is_builtin = true;              ///< drawn from a built-in surface (false: a point file or mesh, a "scan")
+  bool are_normals_estimated = false;  ///< normal lines estimated from the points, not given
+  std::optional<bool> is_orientable;   ///< a mesh input's own; unknown for point files and built-in samples
+  std::optional<long> genus;           ///< a mesh input's own, handles and cross-caps summed over components
+};
+
+/// Handle cuts of a scan's medial sheet (SheetOptions::cut_handles_rel_rho): at rho <= reach/2
+/// every ball of radius 1.5 rho meets the true surface in a disc, so the sheet fails to be one
+/// there only at a defect.
+inline constexpr double kScanCutHandlesRelRho = 1.5;
+
+/// `options` with the settings for such input, as `envcrust reconstruct` runs it: estimated
+/// normals take the 5th percentile of the per-sample reach (they scatter it, METHOD.md §2);
+/// the medial sheet of a scan is cut at handles (kScanCutHandlesRelRho) and to an orientable
+/// sheet, at every seam for an orientable mesh and for a point file (which does not say) only
+/// at seams an orientation-reversing loop shorter than extract::kTwistMinLoopRelRho crosses;
+/// the adaptive retry is on when rho is automatic, with a mesh's genus as max_genus. Built-in
+/// samples keep the method as it is (the experiments measure it) apart from the retry.
+ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions options = {});
+
 /// What is wrong with one run's result, by the checks the adaptive retry makes.
 struct RunDefects {
   bool is_empty = false;           ///< the run gave no faces (genus unset)

@@ -103,8 +103,10 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
   std::sort(sorted.begin(), sorted.end());
 
   step(options, "scan", 0.5);
-  auto ro = method_options(pipeline::Method::Envelope, options.seed);
-  if (!scan.points.has_normals()) ro.envelope.reach_quantile = 0.05;  // as `reconstruct` does
+  pipeline::InputKind kind;  // a point file, as `reconstruct` runs it
+  kind.is_builtin = false;
+  kind.are_normals_estimated = !scan.points.has_normals();
+  const auto ro = pipeline::options_for_input(kind, method_options(pipeline::Method::Envelope, options.seed));
   Trial envelope_trial = run_trial(samples, ro, reference, expected, true);
   if (!has_expected) envelope_trial.is_topology_correct = false;
 

@@ -33,6 +33,20 @@ TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
   return mesh;
 }
 
+ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions options) {
+  if (input.are_normals_estimated) options.envelope.reach_quantile = 0.05;
+  if (!input.is_builtin) {
+    const bool is_point_file = !input.is_orientable.has_value();
+    options.sheet.cut_handles_rel_rho = kScanCutHandlesRelRho;
+    options.sheet.cut_to_orientable = input.is_orientable.value_or(true);
+    options.sheet.orientable_max_twist_loop_rel_rho =
+        is_point_file ? extract::kTwistMinLoopRelRho : std::numeric_limits<double>::infinity();
+  }
+  options.use_adaptive_retry = !options.envelope.rho.has_value();
+  options.max_genus = input.genus;
+  return options;
+}
+
 namespace {
 
 // One run of the stages, without the max_genus check and the remeshing.
