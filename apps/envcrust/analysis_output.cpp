@@ -108,6 +108,11 @@ void print_analysis(std::ostream& out, const std::string& name, const analysis::
       << t.degenerate_faces << " degenerate faces, " << t.duplicate_faces << " duplicate faces\n";
   out << "  Euler characteristic " << t.euler_characteristic << ", orientable: " << yes_no(t.is_orientable)
       << ", boundary loops: " << t.boundary_loops.size() << "\n";
+  if (t.misoriented_edges > 0)
+    out << "  faces not oriented alike: " << t.misoriented_edges << " edges that both their faces run the same way\n";
+  if (t.welded_vertices > 0)
+    out << "  " << t.welded_vertices << " vertices welded to another at the same position (counts are after "
+        << "welding)\n";
   for (std::size_t c = 0; c < t.components.size() && c < 10; ++c) {
     const auto& comp = t.components[c];
     out << "  component " << c << ": chi " << comp.euler_characteristic << ", "

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "inputs.h"
 
+#include "envcrust/errors.h"
 #include "envcrust/io.h"
 
 #include <iostream>
@@ -25,7 +26,13 @@ struct AnalyzeCommand {
 
 void run_curve(const AnalyzeCommand& cmd) {
   const Polyline curve = io::read_polyline(cmd.curve);
-  const auto knot = analysis::analyze_curve(curve, cmd.options);
+  const auto knot = [&] {  // the knot stage names the problem, the message names the file
+    try {
+      return analysis::analyze_curve(curve, cmd.options);
+    } catch (const NumericalFailure& e) {
+      throw NumericalFailure(cmd.curve + ": " + e.what());
+    }
+  }();
   nlohmann::json j = {{"curve", cmd.curve}, {"vertices", curve.size()}, {"knot", knot_json(knot)}};
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
   if (cmd.common.json) {
@@ -73,7 +80,7 @@ void register_analyze(CLI::App& app) {
       "boundary loops with knot types, linking numbers) and, with --reference, its distances");
   sub->add_option("mesh", cmd->mesh, "Mesh file (.ply/.off/.obj/.stl) or builtin:NAME");
   sub->add_option("-r,--reference", cmd->reference,
-                  "Reference: mesh file, point file, or builtin:NAME (exact surface and boundary)");
+                  "Reference: mesh file, point file, or builtin:NAME (its fine tessellation, chord error below 1e-4 of the diagonal, and boundary curves)");
   sub->add_option("--curve", cmd->curve,
                   "Analyze the knot type of one closed polyline (.polyline/.xyz) instead of a mesh");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");

@@ -60,14 +60,13 @@ void run_powercrust(PowerCrustCommand& cmd) {
   io::write_mesh(cmd.output, result.crust);
   if (!cmd.medial_axis_output.empty()) io::write_mesh(cmd.medial_axis_output, pipeline::power_shape_mesh(result));
   if (!cmd.poles_output.empty()) {
-    // One pole per line: position, polar-ball radius, label (in/out/unknown).
-    std::ostringstream text;
-    text.precision(17);
-    text << "# x y z radius label\n";
-    for (const auto& pole : result.poles)
-      text << pole.center.x() << ' ' << pole.center.y() << ' ' << pole.center.z() << ' ' << pole.radius << ' '
-           << label_name(pole.label) << '\n';
-    io::write_text(cmd.poles_output, text.str());
+    io::BallSet poles;
+    for (const auto& pole : result.poles) {
+      poles.centres.push_back(pole.center);
+      poles.radii.push_back(pole.radius);
+      poles.labels.emplace_back(label_name(pole.label));
+    }
+    io::write_balls(cmd.poles_output, poles);
   }
   const auto& s = result.stats;
   const auto crust = topology::analyze_topology(result.crust);
@@ -100,6 +99,7 @@ void run_powercrust(PowerCrustCommand& cmd) {
             << ", " << (crust.is_manifold() ? "manifold" : "non-manifold") << "\n"
             << "  seconds: delaunay " << s.seconds_delaunay << ", poles " << s.seconds_poles << ", power diagram "
             << s.seconds_power_diagram << ", labeling " << s.seconds_labeling << ", crust " << s.seconds_crust
+            << (cmd.options.build_power_shape ? ", power shape " + std::to_string(s.seconds_power_shape) : std::string())
             << "\n";
   for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
 }
@@ -113,7 +113,8 @@ void register_powercrust(CLI::App& app) {
       ->required();
   sub->add_option("-o,--output", cmd->output, "Crust mesh (.ply/.off/.obj)")->required();
   sub->add_option("--medial-axis", cmd->medial_axis_output, "Write the inner power shape's triangles as a mesh");
-  sub->add_option("--poles", cmd->poles_output, "Write the poles (x y z radius label) as text");
+  sub->add_option("--poles", cmd->poles_output, "Write the poles (polar balls): .ply with x y z radius and a label code (0 unknown, 1 in, 2 out), any "
+                  "other name as text lines 'x y z radius in|out|unknown' (both read by render --balls)");
   sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME inputs")
       ->capture_default_str()
       ->check(whole_number_at_least(1));

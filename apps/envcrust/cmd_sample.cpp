@@ -123,13 +123,19 @@ void register_sample(CLI::App& app) {
       "sample", "Sample a built-in surface uniformly by area, or write its exact tessellation");
   sub->add_option("surface", cmd->surface, "Built-in surface name (see --list)");
   sub->add_option("-o,--output", cmd->output, "Output file (.xyz/.ply points; .ply/.off/.obj with --mesh)");
-  sub->add_option("-n,--count", cmd->sampling.count, "Number of points")->capture_default_str()->check(whole_number_at_least(1));
-  sub->add_option("--noise", cmd->sampling.noise_rel_diag,
-                  "Gaussian noise sigma as a fraction of the bounding-box diagonal (0.0025 = 0.25%)")
-      ->capture_default_str();
-  sub->add_flag("--normals", cmd->sampling.with_normals, "Write the exact unit normals too");
-  sub->add_option("--seed", cmd->sampling.seed, "Random seed (same seed, same points)")->capture_default_str();
-  sub->add_flag("--mesh", cmd->mesh, "Write the exact fine tessellation (ground truth) instead of points");
+  auto* count = sub->add_option("-n,--count", cmd->sampling.count, "Number of points")
+                    ->capture_default_str()
+                    ->check(whole_number_at_least(1));
+  auto* noise = sub->add_option("--noise", cmd->sampling.noise_rel_diag,
+                                "Gaussian noise sigma as a fraction of the bounding-box diagonal (0.0025 = 0.25%)")
+                    ->capture_default_str();
+  auto* normals = sub->add_flag("--normals", cmd->sampling.with_normals, "Write the exact unit normals too");
+  auto* seed = sub->add_option("--seed", cmd->sampling.seed, "Random seed (same seed, same points)")->capture_default_str();
+  sub->add_flag("--mesh", cmd->mesh, "Write the exact fine tessellation (ground truth) instead of points")
+      ->excludes(count)
+      ->excludes(noise)
+      ->excludes(normals)
+      ->excludes(seed);
   sub->add_option("--boundary-out", cmd->boundary_output,
                   "Write the true boundary loops as polylines (FILE.i.polyline when several)");
   sub->add_flag("--list", cmd->list, "List the built-in surfaces with their expected topology");

@@ -81,11 +81,18 @@ struct BallSet {
   std::vector<std::string> labels;  ///< one per centre; "" when the line has none
 };
 
-/// Read balls from text, one per line: "x y z radius [label]" (what `envcrust powercrust
-/// --poles` writes, labels in/out/unknown); `#` comments and blank lines allowed.
+/// Read balls (what `envcrust powercrust --poles` writes): `.ply` vertices with x, y, z,
+/// `radius` and an optional `label` code (0 unknown, 1 in, 2 out); any other extension is text,
+/// one ball per line "x y z radius [label]", `#` comments and blank lines allowed.
 /// @throws IoError e.g. "poles.txt:4: expected x y z radius [label], got 3 values",
-///   "poles.txt:4: radius must be finite and > 0 (got -1)", "poles.txt: no balls".
+///   "poles.txt:4: radius must be finite and > 0 (got -1)", "poles.txt: no balls",
+///   "p.ply: PLY vertices have no 'radius' property".
 BallSet read_balls(const std::filesystem::path& path);
+
+/// Write balls atomically: `.ply` as binary PLY (x, y, z, radius as double, uchar label code:
+/// labels must be "", unknown, in or out), any other extension as text read_balls reads.
+/// @throws IoError naming the file (non-finite centre, radius <= 0, unknown label, write failure).
+void write_balls(const std::filesystem::path& path, const BallSet& balls);
 
 /// The whole file as bytes (fonts, ...). @throws IoError "FILE: cannot open file" and friends.
 std::vector<std::uint8_t> read_binary_file(const std::filesystem::path& path);

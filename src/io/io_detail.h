@@ -93,6 +93,8 @@ struct RawMesh {
   std::vector<Point3> vertices;
   std::vector<Vector3> normals;  ///< empty or one per vertex
   std::vector<std::vector<Index>> faces;
+  std::vector<double> radii;   ///< PLY vertex property `radius`: empty or one per vertex
+  std::vector<double> labels;  ///< PLY vertex property `label`: empty or one per vertex
 };
 
 RawMesh read_ply(const std::filesystem::path& path);

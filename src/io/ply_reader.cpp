@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 namespace envcrust::io::detail {
 
@@ -170,6 +171,7 @@ struct Layout {
   std::optional<std::size_t> normal[3];
   bool has_normals = false;
   std::optional<std::size_t> face_indices;
+  std::optional<std::size_t> radius, label;  ///< balls (`envcrust powercrust --poles`)
 };
 
 Layout check_vertex_element(const std::filesystem::path& path, const PlyElement& element) {
@@ -194,6 +196,10 @@ Layout check_vertex_element(const std::filesystem::path& path, const PlyElement&
                     "' must not be a list");
       }
     }
+  }
+  for (auto [role, name] : {std::pair{&layout.radius, "radius"}, std::pair{&layout.label, "label"}}) {
+    *role = find_property(element, name);
+    if (*role && element.properties[**role].is_list) *role = std::nullopt;
   }
   if (element.count > max_vertices) {
     fail_at(path, element.line,
@@ -298,6 +304,8 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
       if (layout.has_normals) {
         mesh.normals.reserve(capacity);
       }
+      if (layout.radius) mesh.radii.reserve(capacity);
+      if (layout.label) mesh.labels.reserve(capacity);
     } else if (is_face) {
       mesh.faces.reserve(capacity);
     }
@@ -317,6 +325,8 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
           continue;
         }
         const double value = source.scalar(property.type);
+        if (p == layout.radius) mesh.radii.push_back(value);
+        if (p == layout.label) mesh.labels.push_back(value);
         for (int axis = 0; axis < 3; ++axis) {
           if (p == layout.coordinate[axis]) {
             coordinate[axis] = value;

@@ -125,6 +125,10 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   }
   count_labels(result.poles, stats);
   stats.seconds_labeling = clock.lap("labeling");
+  if (stats.inner_poles == 0)
+    result.warnings.push_back("no pole is labeled in: the " + std::to_string(result.samples.size()) +
+                              " samples enclose no volume the labeling can find (too few or too sparse for a "
+                              "closed surface), so the crust is empty");
 
   if (options.build_crust) {
     clock.begin("crust");

@@ -54,6 +54,10 @@ RevolutionSpec sphere_spec(double theta1) {
   spec.s0 = 0;
   spec.s1 = theta1;
   spec.s0_is_pole = true;
+  // u turns clockwise about z (e1 = y, e2 = x) so that S_u x S_v, the normal and the
+  // tessellation's winding, point outward (counter-clockwise they point to the centre).
+  spec.e1 = Vector3(0, 1, 0);
+  spec.e2 = Vector3(1, 0, 0);
   return spec;
 }
 

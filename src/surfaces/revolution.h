@@ -21,7 +21,7 @@ struct RevolutionSpec {
   std::function<ProfileJet(double)> profile;
   double s0 = 0, s1 = 1;
   bool s0_is_pole = false, s1_is_pole = false;  ///< r(s) = 0 there
-  Vector3 axis = Vector3(0, 0, 1);              ///< right-handed frame (e1, e2, axis)
+  Vector3 axis = Vector3(0, 0, 1);              ///< frame (e1, e2, axis); left-handed turns the normal
   Vector3 e1 = Vector3(1, 0, 0), e2 = Vector3(0, 1, 0);
   ExpectedTopology topology;
 };

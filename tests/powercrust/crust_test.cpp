@@ -144,6 +144,16 @@ TEST(PowerCrustCrust, open_cylinder_is_closed_off_by_the_direct_power_crust) {
   EXPECT_TRUE(t.is_closed());
   EXPECT_EQ(t.boundary_loops.size(), 0u);
   EXPECT_EQ(t.misoriented_edges, 0u);
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, 2);  // a sphere: the tube with both ends capped
+  // The caps span the rims: crust vertices reach the axis near both ends (|z| ~ 1).
+  bool top = false, bottom = false;
+  for (const auto& v : result.crust.vertices) {
+    const bool on_axis = std::hypot(v.x(), v.y()) < 0.5;
+    top = top || (on_axis && v.z() > 0.9);
+    bottom = bottom || (on_axis && v.z() < -0.9);
+  }
+  EXPECT_TRUE(top && bottom);
 }
 
 TEST(PowerCrustCrust, each_face_points_from_its_inner_pole_to_its_outer_pole) {

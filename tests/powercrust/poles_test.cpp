@@ -41,6 +41,28 @@ TEST(PowerCrustPoles, inner_poles_lie_inside_the_crust) {
   EXPECT_EQ(outside, 0u);
 }
 
+TEST(PowerCrustPoles, exact_torus_poles_fall_on_the_side_of_their_label_and_inner_ones_near_the_core) {
+  // Torus: core circle of radius 1 in z = 0, tube radius 0.4; its inner medial axis is the
+  // core circle. Checked against the analytic surface, not the crust.
+  const auto points = test_support::sample_builtin("torus", 10000, 0.0);
+  const auto result = power_crust(points);
+  std::size_t inner = 0, outer = 0, near_core = 0;
+  for (const Pole& p : result.poles) {
+    const double core = std::hypot(std::hypot(p.center.x(), p.center.y()) - 1.0, p.center.z());
+    if (p.label == PoleLabel::In) {
+      ++inner;
+      EXPECT_LT(core, 0.4);
+      near_core += core < 0.1;
+    } else if (p.label == PoleLabel::Out) {
+      ++outer;
+      EXPECT_GT(core, 0.4);
+    }
+  }
+  EXPECT_GT(inner, 1000u);
+  EXPECT_GT(outer, 1000u);
+  EXPECT_GT(static_cast<double>(near_core), 0.9 * static_cast<double>(inner));
+}
+
 TEST(PowerCrustPoles, noisy_inner_poles_outside_the_crust_are_shallow_noise_poles) {
   // Noise makes small polar balls hugging the surface; propagation labels some In although
   // their centre lies just outside the crust (measured: 30 of ~10k on this torus).

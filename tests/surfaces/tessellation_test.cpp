@@ -31,6 +31,26 @@ TEST(Tessellation, every_builtin_has_its_expected_topology_on_a_coarse_grid) {
   }
 }
 
+TEST(Tessellation, closed_surfaces_and_the_hemisphere_wind_outward) {
+  // Signed volume of the closed ones (4/3 pi for the unit sphere), and every hemisphere face
+  // turned away from the centre: the renderer's front colour is the outside.
+  for (const char* name : {"sphere", "torus"}) {
+    const auto mesh = tessellate(*make_builtin(name));
+    double volume = 0;
+    for (const auto& t : mesh.triangles) {
+      const Vector3 a = mesh.vertices[t[0]] - CGAL::ORIGIN, b = mesh.vertices[t[1]] - CGAL::ORIGIN,
+                    c = mesh.vertices[t[2]] - CGAL::ORIGIN;
+      volume += a * CGAL::cross_product(b, c) / 6;
+    }
+    EXPECT_GT(volume, 0) << name;
+  }
+  const auto half = tessellate(*make_builtin("hemisphere"));
+  for (const auto& t : half.triangles) {
+    const Point3 &a = half.vertices[t[0]], &b = half.vertices[t[1]], &c = half.vertices[t[2]];
+    ASSERT_GT(CGAL::cross_product(b - a, c - a) * (CGAL::centroid(a, b, c) - CGAL::ORIGIN), 0);
+  }
+}
+
 TEST(Tessellation, moebius_has_one_boundary_loop_and_cannot_be_oriented) {
   TessellationOptions options;
   options.nu = 40;
