@@ -9,6 +9,7 @@
 #include "envcrust/topology.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -59,6 +60,8 @@ void parse_size(const std::string& text, render::RenderOptions& options) {
   std::istringstream in(text);
   if (!(in >> options.width >> x >> options.height) || (x != 'x' && x != 'X') || in >> extra)
     throw UsageError("--size: expected WIDTHxHEIGHT in pixels, e.g. 800x600, got '" + text + "'");
+  if (options.width < 16 || options.width > 8192 || options.height < 16 || options.height > 8192)
+    throw UsageError("--size: width and height must be in [16, 8192] pixels, got '" + text + "'");
 }
 
 render::View parse_view(const std::string& text) {
@@ -70,6 +73,8 @@ render::View parse_view(const std::string& text) {
   std::istringstream in(text);
   if (!(in >> view.azimuth_deg >> comma >> view.elevation_deg) || comma != ',' || in >> extra)
     throw UsageError("--view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got '" + text + "'");
+  if (!(std::abs(view.elevation_deg) <= 90) || !std::isfinite(view.azimuth_deg))
+    throw UsageError("--view: the elevation must be in [-90, 90] degrees, got '" + text + "'");
   return view;
 }
 
@@ -156,6 +161,11 @@ void run_render(RenderCommand& cmd) {
     throw UsageError("--balls: at most one per input (" + std::to_string(cmd.inputs.size()) + "), got " +
                      std::to_string(cmd.balls.size()));
   if (!cmd.grid.empty() && cmd.grid.size() != 2) throw UsageError("--grid: expected ROWS COLUMNS");
+  if (!cmd.grid.empty() && (cmd.grid[0] < 1 || cmd.grid[1] < 1 ||
+                            static_cast<std::size_t>(cmd.grid[0]) * static_cast<std::size_t>(cmd.grid[1]) < cmd.inputs.size()))
+    throw UsageError("--grid " + std::to_string(cmd.grid[0]) + " " + std::to_string(cmd.grid[1]) + ": room for " +
+                     std::to_string(std::max(0, cmd.grid[0]) * std::max(0, cmd.grid[1])) + " panels, not the " +
+                     std::to_string(cmd.inputs.size()) + " inputs");
 
   std::vector<std::string> warnings;
   std::vector<render::Panel> panels;
@@ -237,7 +247,7 @@ void register_render(CLI::App& app) {
       ->check(number_above(0));
   sub->add_option("--boundary-color", cmd->boundary_color, "One colour for all boundary tubes, #rrggbb (default: a palette)");
   sub->add_option("--balls", cmd->balls,
-                  "Balls 'x y z radius [label]' (e.g. powercrust --poles) drawn translucent over the i-th input");
+                  "Balls (powercrust --poles: .ply with radius and label, or text 'x y z radius [label]') drawn translucent over the i-th input");
   const std::map<std::string, BallLabels> labels = {{"in", BallLabels::In}, {"out", BallLabels::Out}, {"all", BallLabels::All}};
   sub->add_option("--ball-labels", cmd->ball_labels, "Which labelled balls to draw: in, out or all (unlabelled: always)")
       ->transform(CLI::CheckedTransformer(labels, CLI::ignore_case))

@@ -172,7 +172,9 @@ struct EnvelopeOptions {
   double reach_min_pair_rel_spacing = 4.0;
   /// Poisson-disk radius h of the envelope samples as a fraction of rho. The extraction
   /// needs cells spanning the shell with small lateral offset: 0.33 worked, 0.5 broke
-  /// (METHOD.md §3.2); 0.25 gives a sheet error of rho/64 (F4). Range (0, 1].
+  /// (METHOD.md §3.2); 0.25 gives a sheet error of rho/64 (F4). Range (0, 4]: above 1 the
+  /// envelope is sampled sparser than its own radius, which only experiments ask for (the
+  /// unknot-radius sweep at a fixed absolute spacing).
   double spacing_rel_rho = 0.25;
   /// Drop samples that come closer than this fraction of rho to the input samples: they are
   /// not on the envelope (METHOD.md probe: 0.9 for sheets; rims use `rim_clearance`).

@@ -46,7 +46,7 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   if (o.rho) check(*o.rho > 0 && std::isfinite(*o.rho), "rho", *o.rho);
   check(o.rho_rel_reach > 0 && o.rho_rel_reach < 1, "rho_rel_reach", o.rho_rel_reach);
   check(o.max_reach_rel_diag > 0, "max_reach_rel_diag", o.max_reach_rel_diag);
-  check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 1, "spacing_rel_rho", o.spacing_rel_rho);
+  check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 4, "spacing_rel_rho", o.spacing_rel_rho);
   check(o.sheet_clearance > 0 && o.sheet_clearance <= 1, "sheet_clearance", o.sheet_clearance);
   check(o.rim_clearance > 0 && o.rim_clearance <= 1, "rim_clearance", o.rim_clearance);
   check(o.fold_warning_fraction > 0 && o.fold_warning_fraction <= 1, "fold_warning_fraction",

@@ -11,14 +11,21 @@ struct LadderResult {
   std::optional<std::size_t> first_failure;
   std::string failure;  ///< outcome caption at the first failure
   int runs = 0;
+  /// For the figure: the first seed's result at sparsest_ok, else at the first failure.
+  TriangleMesh shown_mesh;
+  std::string shown_caption;
 };
 
-bool is_correct(const SurfaceCase& c, pipeline::Method method, std::size_t count, std::uint64_t seed,
-                std::string& caption) {
-  const Trial trial =
-      run_trial(sample_case(c, count, seed), method_options(method, seed), c.reference, c.expected, false);
-  caption = outcome_caption(trial.report, true);
-  return trial.is_topology_correct;
+// One run: the topology verdict, its caption and the result mesh.
+struct Rung {
+  bool is_correct = false;
+  std::string caption;
+  TriangleMesh mesh;
+};
+
+Rung run_rung(const SurfaceCase& c, pipeline::Method method, std::size_t count, std::uint64_t seed) {
+  Trial trial = run_trial(sample_case(c, count, seed), method_options(method, seed), c.reference, c.expected, false);
+  return {trial.is_topology_correct, outcome_caption(trial.report, true), std::move(trial.result.mesh)};
 }
 
 // Walk down the ladder with one seed until the first failure; then confirm the sparsest passing
@@ -26,29 +33,34 @@ bool is_correct(const SurfaceCase& c, pipeline::Method method, std::size_t count
 LadderResult climb(const SurfaceCase& c, pipeline::Method method, const std::vector<std::size_t>& ladder,
                    std::uint64_t seed, int seeds) {
   LadderResult r;
-  std::size_t passed = 0;  // rungs passed with the first seed
-  for (; passed < ladder.size(); ++passed) {
+  std::vector<Rung> first_seed;  // rungs run with the first seed, all correct but maybe the last
+  for (std::size_t k = 0; k < ladder.size(); ++k) {
     ++r.runs;
-    std::string caption;
-    if (!is_correct(c, method, ladder[passed], seed, caption)) {
-      r.first_failure = ladder[passed];
-      r.failure = caption;
+    first_seed.push_back(run_rung(c, method, ladder[k], seed));
+    if (!first_seed.back().is_correct) {
+      r.first_failure = ladder[k];
+      r.failure = first_seed.back().caption;
+      r.shown_mesh = first_seed.back().mesh;
+      r.shown_caption = "N " + std::to_string(ladder[k]) + " (first failure): " + first_seed.back().caption;
       break;
     }
   }
+  const std::size_t passed = first_seed.size() - (r.first_failure ? 1 : 0);
   for (std::size_t k = passed; k-- > 0;) {
     bool is_confirmed = true;
     for (int s = 1; s < seeds && is_confirmed; ++s) {
       ++r.runs;
-      std::string caption;
-      if (!is_correct(c, method, ladder[k], seed + s, caption)) {
+      const Rung check = run_rung(c, method, ladder[k], seed + s);
+      if (!check.is_correct) {
         is_confirmed = false;
         r.first_failure = ladder[k];
-        r.failure = caption + " (seed " + std::to_string(seed + s) + ")";
+        r.failure = check.caption + " (seed " + std::to_string(seed + s) + ")";
       }
     }
     if (is_confirmed) {
       r.sparsest_ok = ladder[k];
+      r.shown_mesh = std::move(first_seed[k].mesh);
+      r.shown_caption = "N " + std::to_string(ladder[k]) + " (sparsest correct): " + first_seed[k].caption;
       break;
     }
   }
@@ -74,6 +86,7 @@ ExperimentResult run_density(const ExperimentOptions& options) {
   table.title = "Sparsest sample count with the right topology (ladder " + std::to_string(ladder.front()) + " → " +
                 std::to_string(ladder.back()) + ", halving; confirmed with " + std::to_string(seeds) + " seeds)";
   table.columns = {"surface", "method", "sparsest N correct", "first failing N", "outcome there", "runs"};
+  Figure figure{"density", "Sparsest correct sampling per surface: envelope (left) and direct Power Crust (right)", 4, {}};
   for (std::size_t i = 0; i < names.size(); ++i) {
     step(options, "density", static_cast<double>(i) / names.size());
     const SurfaceCase c = make_case(names[i]);
@@ -83,9 +96,16 @@ ExperimentResult run_density(const ExperimentOptions& options) {
                      r.sparsest_ok ? Cell{static_cast<std::int64_t>(*r.sparsest_ok)} : Cell{std::string("none")},
                      r.first_failure ? Cell{static_cast<std::int64_t>(*r.first_failure)} : Cell{},
                      r.first_failure ? Cell{r.failure} : Cell{}, std::int64_t{r.runs}});
+      if (options.use_figures) {
+        const bool is_ribbon = names[i].find("ribbon") != std::string::npos;
+        figure.panels.push_back(mesh_panel(names[i] + ", " + (method == pipeline::Method::Envelope ? "envelope" : "direct") +
+                                               ", " + r.shown_caption,
+                                           r.shown_mesh, is_ribbon ? ribbon_view() : render::View::iso()));
+      }
     }
   }
   out.tables.push_back(std::move(table));
+  if (options.use_figures) out.figures.push_back(std::move(figure));
   out.notes.push_back("\"none\": wrong already at N " + std::to_string(ladder.front()) +
                       "; the direct Power Crust closes every boundary, so it never has an open surface's topology");
   return out;

@@ -122,8 +122,14 @@ TEST_F(CliTest, render_bad_size_and_view_are_usage_errors) {
   EXPECT_EQ(view.err,
             "envcrust: usage error: --view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got 'side'\n");
   const auto tiny = run_envcrust("render builtin:sphere --size 8x8 -o " + path("x.png"));
-  EXPECT_EQ(tiny.exit_code, 1);
-  EXPECT_EQ(tiny.err, "envcrust: error: RenderOptions.width must be in [16, 8192] (got 8)\n");
+  EXPECT_EQ(tiny.exit_code, 2);
+  EXPECT_EQ(tiny.err, "envcrust: usage error: --size: width and height must be in [16, 8192] pixels, got '8x8'\n");
+  const auto steep = run_envcrust("render builtin:sphere --view 30,200 -o " + path("x.png"));
+  EXPECT_EQ(steep.exit_code, 2);
+  EXPECT_EQ(steep.err, "envcrust: usage error: --view: the elevation must be in [-90, 90] degrees, got '30,200'\n");
+  const auto grid = run_envcrust("render builtin:sphere builtin:torus builtin:square --grid 1 2 -o " + path("x.png"));
+  EXPECT_EQ(grid.exit_code, 2);
+  EXPECT_EQ(grid.err, "envcrust: usage error: --grid 1 2: room for 2 panels, not the 3 inputs\n");
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
