@@ -11,7 +11,8 @@ struct LadderResult {
   std::optional<std::size_t> first_failure;
   std::string failure;  ///< outcome caption at the first failure
   int runs = 0;
-  /// For the figure: the first seed's result at sparsest_ok, else at the first failure.
+  /// For the figure: the first seed's result at sparsest_ok, else at the first failure (with
+  /// its outcome in the caption).
   TriangleMesh shown_mesh;
   std::string shown_caption;
 };
@@ -41,7 +42,7 @@ LadderResult climb(const SurfaceCase& c, pipeline::Method method, const std::vec
       r.first_failure = ladder[k];
       r.failure = first_seed.back().caption;
       r.shown_mesh = first_seed.back().mesh;
-      r.shown_caption = "N " + std::to_string(ladder[k]) + " (first failure): " + first_seed.back().caption;
+      r.shown_caption = "N " + std::to_string(ladder[k]) + ": " + first_seed.back().caption;
       break;
     }
   }
@@ -60,7 +61,7 @@ LadderResult climb(const SurfaceCase& c, pipeline::Method method, const std::vec
     if (is_confirmed) {
       r.sparsest_ok = ladder[k];
       r.shown_mesh = std::move(first_seed[k].mesh);
-      r.shown_caption = "N " + std::to_string(ladder[k]) + " (sparsest correct): " + first_seed[k].caption;
+      r.shown_caption = "N " + std::to_string(ladder[k]) + " (sparsest)";
       break;
     }
   }
@@ -98,8 +99,8 @@ ExperimentResult run_density(const ExperimentOptions& options) {
                      r.first_failure ? Cell{r.failure} : Cell{}, std::int64_t{r.runs}});
       if (options.use_figures) {
         const bool is_ribbon = names[i].find("ribbon") != std::string::npos;
-        figure.panels.push_back(mesh_panel(names[i] + ", " + (method == pipeline::Method::Envelope ? "envelope" : "direct") +
-                                               ", " + r.shown_caption,
+        figure.panels.push_back(mesh_panel(names[i] + (method == pipeline::Method::Envelope ? " envelope " : " direct ") +
+                                               r.shown_caption,
                                            r.shown_mesh, is_ribbon ? ribbon_view() : render::View::iso()));
       }
     }
