@@ -80,12 +80,14 @@ ExperimentResult run_density(const ExperimentOptions& options) {
       if (surfaces::make_builtin(name)->expected_topology().boundary_loops > 0) names.push_back(name);
   }
   const std::vector<std::size_t> ladder = options.use_quick_sizes
-                                              ? std::vector<std::size_t>{2000, 250}
+                                              ? std::vector<std::size_t>{2000, 250, 80}
                                               : std::vector<std::size_t>{5000, 2500, 1250, 625, 312, 156};
   const int seeds = options.use_quick_sizes ? 1 : 3;
   Table table;
-  table.title = "Sparsest sample count with the right topology (ladder " + std::to_string(ladder.front()) + " → " +
-                std::to_string(ladder.back()) + ", halving; confirmed with " + std::to_string(seeds) + " seeds)";
+  std::string rungs;
+  for (const std::size_t n : ladder) rungs += (rungs.empty() ? "" : ", ") + std::to_string(n);
+  table.title = "Sparsest sample count with the right topology (ladder " + rungs + "; confirmed with " +
+                std::to_string(seeds) + (seeds == 1 ? " seed)" : " seeds)");
   table.columns = {"surface", "method", "sparsest N correct", "first failing N", "outcome there", "runs"};
   Figure figure{"density", "Sparsest correct sampling per surface: envelope (left) and direct Power Crust (right)", 4, {}};
   for (std::size_t i = 0; i < names.size(); ++i) {
