@@ -4,8 +4,10 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <ostream>
+#include <string>
 #include <system_error>
 
 namespace envcrust::io::detail {
@@ -62,7 +64,14 @@ bool parse_double(std::string_view token, double& value) {
     return false;
   }
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  return ec == std::errc() && end == token.data() + token.size();
+  if (end != token.data() + token.size()) return false;
+  if (ec == std::errc::result_out_of_range) {
+    // A number beyond double's range ("1e999") reads as +-inf (the readers then say
+    // "non-finite"), one below it as its nearest double (0 or a subnormal), as strtod gives.
+    value = std::strtod(std::string(token).c_str(), nullptr);
+    return true;
+  }
+  return ec == std::errc();
 }
 
 bool parse_int(std::string_view token, std::int64_t& value) {
@@ -76,7 +85,14 @@ bool parse_int(std::string_view token, std::int64_t& value) {
     return false;
   }
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  return ec == std::errc() && end == token.data() + token.size();
+  if (end != token.data() + token.size()) return false;
+  if (ec == std::errc::result_out_of_range) {
+    // A number beyond double's range ("1e999") reads as +-inf (the readers then say
+    // "non-finite"), one below it as its nearest double (0 or a subnormal), as strtod gives.
+    value = std::strtod(std::string(token).c_str(), nullptr);
+    return true;
+  }
+  return ec == std::errc();
 }
 
 void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
