@@ -50,6 +50,10 @@ struct ReconstructOptions {
   /// half the reach to bridge the input's gaps (the envelope may fold into handles there).
   /// Off: one run.
   bool use_adaptive_retry = false;
+  /// Turn each piece of a medial-sheet result to face like the input's normals
+  /// (mesh::orient_along_normals); the sheet itself comes out with either side up. Off for
+  /// estimated normal lines, whose signs are arbitrary (options_for_input).
+  bool use_normal_orientation = true;
   /// The genus M is known to have at most (a mesh input's own: handles and cross-caps summed
   /// over components); nullopt: unknown, and the defect count takes every handle as one.
   std::optional<long> max_genus;
@@ -69,7 +73,8 @@ struct InputKind {
 inline constexpr double kScanCutHandlesRelRho = 1.5;
 
 /// `options` with the settings for such input, as `envcrust reconstruct` runs it: estimated
-/// normals take the 5th percentile of the per-sample reach (they scatter it, METHOD.md §2);
+/// normals take the 5th percentile of the per-sample reach (they scatter it, METHOD.md §2)
+/// and leave the result's orientation as it comes (their signs are arbitrary);
 /// the medial sheet of a scan is cut at handles (kScanCutHandlesRelRho) and to an orientable
 /// sheet, at every seam for an orientable mesh and for a point file (which does not say) only
 /// at seams an orientation-reversing loop shorter than extract::kTwistMinLoopRelRho crosses;
@@ -128,7 +133,8 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
 analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
                                               const envelope::SurfaceSamples& samples, double rho);
 
-/// The power shape's triangles as a mesh over the In poles (the paper's output).
+/// The power shape's triangles as a mesh whose vertices are the In poles, in pole order (the
+/// paper's output; the power shape holds only In poles).
 TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result);
 
 }  // namespace envcrust::pipeline

@@ -1,6 +1,7 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
+#include "envcrust/mesh.h"
 #include "envcrust/topology.h"
 
 #include <algorithm>
@@ -28,13 +29,21 @@ void remesh_result(ReconstructResult& out, const std::optional<remesh::RemeshOpt
 
 TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
   TriangleMesh mesh;
-  for (const auto& pole : result.poles) mesh.vertices.push_back(pole.center);
-  mesh.triangles = result.power_shape.triangles;
+  std::vector<Index> vertex_of(result.poles.size(), powercrust::kNoPole);
+  for (std::size_t p = 0; p < result.poles.size(); ++p) {
+    if (result.poles[p].label != powercrust::PoleLabel::In) continue;
+    vertex_of[p] = static_cast<Index>(mesh.vertices.size());
+    mesh.vertices.push_back(result.poles[p].center);
+  }
+  for (const auto& t : result.power_shape.triangles) mesh.triangles.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
   return mesh;
 }
 
 ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions options) {
-  if (input.are_normals_estimated) options.envelope.reach_quantile = 0.05;
+  if (input.are_normals_estimated) {
+    options.envelope.reach_quantile = 0.05;
+    options.use_normal_orientation = false;
+  }
   if (!input.is_builtin) {
     const bool is_point_file = !input.is_orientable.has_value();
     options.sheet.cut_handles_rel_rho = kScanCutHandlesRelRho;
@@ -165,6 +174,8 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     }
   }
   remesh_result(out, options.remesh, progress);
+  if (options.use_normal_orientation && options.method == Method::Envelope && options.extraction == Extraction::Sheet)
+    mesh::orient_along_normals(out.mesh, samples.points, samples.normals);
   return out;
 }
 

@@ -402,7 +402,12 @@ TEST_F(CliTest, powercrust_of_a_torus_sample_is_a_closed_torus) {
   EXPECT_EQ(j["crust"]["is_closed"], true);
   EXPECT_EQ(j["crust"]["is_manifold"], true);
   EXPECT_GT(j["inner_poles"].get<int>(), 0);
-  EXPECT_TRUE(fs::exists(path("ma.ply")));
+  // The medial axis: the In poles, all inside the tube (core circle radius 1, tube 0.4),
+  // joined by the power shape's triangles.
+  const auto axis = envcrust::io::read_polygon_mesh(path("ma.ply"));
+  EXPECT_EQ(axis.vertices.size(), j["inner_poles"].get<std::size_t>());
+  EXPECT_GT(axis.faces.size(), 0u);
+  for (const auto& v : axis.vertices) EXPECT_LT(std::hypot(std::hypot(v.x(), v.y()) - 1.0, v.z()), 0.4);
   // One line per pole after the header.
   const auto poles = envcrust::testing::slurp(path("poles.txt"));
   EXPECT_EQ(static_cast<std::size_t>(std::count(poles.begin(), poles.end(), '\n')), j["poles"].get<std::size_t>() + 1);
