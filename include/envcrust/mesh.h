@@ -69,14 +69,6 @@ struct SpatiallyOrdered {
 /// neighbourhoods (edge collapse, remeshing) then miss the cache at every step.
 SpatiallyOrdered order_spatially(const TriangleMesh& mesh);
 
-/// Turn each edge-connected piece of `mesh` over (every face's winding reversed) when its
-/// area vectors, summed against the normal of the sample nearest to each face's centre, point
-/// against `normals`: a reconstruction then faces like the oriented normals it was made from
-/// (and its renders show their front colour on that side). Windings within a piece are kept
-/// relative to each other. Returns the number of pieces turned; 0 without samples.
-std::size_t orient_along_normals(TriangleMesh& mesh, const std::vector<Point3>& points,
-                                 const std::vector<Vector3>& normals);
-
 /// `count` points drawn uniformly by area on the triangles, deterministic for `seed`.
 std::vector<Point3> sample_by_area(const TriangleMesh& mesh, std::size_t count,
                                    std::uint64_t seed);

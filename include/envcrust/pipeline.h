@@ -51,7 +51,7 @@ struct ReconstructOptions {
   /// Off: one run.
   bool use_adaptive_retry = false;
   /// Turn each piece of a medial-sheet result to face like the input's normals
-  /// (mesh::orient_along_normals); the sheet itself comes out with either side up. Off for
+  /// (topology::orient_along_normals); the sheet itself comes out with either side up. Off for
   /// estimated normal lines, whose signs are arbitrary (options_for_input).
   bool use_normal_orientation = true;
   /// The genus M is known to have at most (a mesh input's own: handles and cross-caps summed

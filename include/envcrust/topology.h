@@ -91,4 +91,12 @@ std::vector<BoundaryLoop> boundary_loops(const TriangleMesh& mesh);
 /// @returns the number of faces flipped.
 std::size_t orient_faces(TriangleMesh& mesh);
 
+/// Turn each piece of `mesh` (faces joined through edges) over, every face's winding
+/// reversed, when its area vectors, summed against the normal of the sample nearest to each
+/// face's centre, point against `normals`: a reconstruction then faces like the oriented
+/// normals it was made from (and renders show their front colour on that side). Windings
+/// within a piece keep their relation. @returns the number of pieces turned; 0 without samples.
+std::size_t orient_along_normals(TriangleMesh& mesh, const std::vector<Point3>& points,
+                                 const std::vector<Vector3>& normals);
+
 }  // namespace envcrust::topology

@@ -1,7 +1,6 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
-#include "envcrust/mesh.h"
 #include "envcrust/topology.h"
 
 #include <algorithm>
@@ -175,7 +174,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   }
   remesh_result(out, options.remesh, progress);
   if (options.use_normal_orientation && options.method == Method::Envelope && options.extraction == Extraction::Sheet)
-    mesh::orient_along_normals(out.mesh, samples.points, samples.normals);
+    topology::orient_along_normals(out.mesh, samples.points, samples.normals);
   return out;
 }
 

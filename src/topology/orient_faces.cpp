@@ -1,14 +1,19 @@
-// orient_faces: flip triangles so that each piece of a mesh is consistently wound.
+// orient_faces: flip triangles so that each piece of a mesh is consistently wound;
+// orient_along_normals: turn whole pieces to face like the samples' normals.
 #include "envcrust/mesh_graph.h"
+#include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
 #include "envcrust/union_find.h"
+
+#include <tbb/parallel_for.h>
 
 #include <utility>
 
 namespace envcrust::topology {
+namespace {
 
-std::size_t orient_faces(TriangleMesh& mesh) {
-  std::vector<std::uint32_t> kept;  // faces with three distinct vertices
+// The edge table of the faces with three distinct vertices; kept[f] is face f's index in mesh.
+MeshGraph graph_of_proper_faces(const TriangleMesh& mesh, std::vector<std::uint32_t>& kept) {
   std::vector<std::array<Index, 3>> faces;
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
@@ -16,7 +21,14 @@ std::size_t orient_faces(TriangleMesh& mesh) {
     kept.push_back(f);
     faces.push_back(t);
   }
-  const MeshGraph g = build_mesh_graph(std::move(faces), mesh.vertices.size());
+  return build_mesh_graph(std::move(faces), mesh.vertices.size());
+}
+
+}  // namespace
+
+std::size_t orient_faces(TriangleMesh& mesh) {
+  std::vector<std::uint32_t> kept;
+  const MeshGraph g = graph_of_proper_faces(mesh, kept);
   UnionFind uf(g.faces.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e)
     if (g.face_count_of_edge(e) == 2)
@@ -59,6 +71,35 @@ std::size_t orient_faces(TriangleMesh& mesh) {
     }
   }
   return flipped;
+}
+
+std::size_t orient_along_normals(TriangleMesh& mesh, const std::vector<Point3>& points,
+                                 const std::vector<Vector3>& normals) {
+  if (mesh.triangles.empty() || points.empty() || normals.size() != points.size()) return 0;
+  // Pieces: faces joined through edges (repeated-vertex faces belong to none and stay).
+  std::vector<std::uint32_t> kept;
+  const MeshGraph g = graph_of_proper_faces(mesh, kept);
+  UnionFind uf(g.faces.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    for (std::uint32_t k = g.edge_face_begin[e] + 1; k < g.edge_face_begin[e + 1]; ++k)
+      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[k]);
+  std::vector<std::uint32_t> piece;
+  const std::uint32_t count = uf.label_sets(piece);
+  // Per face: its area vector against the normal of the sample nearest to its centre.
+  std::vector<double> agreement(g.faces.size());
+  const NearestIndex nearest(points);
+  tbb::parallel_for(std::size_t{0}, g.faces.size(), [&](std::size_t f) {
+    const auto& t = g.faces[f];
+    const Point3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    agreement[f] = CGAL::cross_product(b - a, c - a) * normals[nearest.nearest(CGAL::centroid(a, b, c)).first];
+  });
+  std::vector<double> score(count, 0.0);
+  for (std::size_t f = 0; f < agreement.size(); ++f) score[piece[f]] += agreement[f];
+  std::size_t turned = 0;
+  for (const double s : score) turned += s < 0;
+  for (std::size_t f = 0; f < g.faces.size(); ++f)
+    if (score[piece[f]] < 0) std::swap(mesh.triangles[kept[f]][1], mesh.triangles[kept[f]][2]);
+  return turned;
 }
 
 }  // namespace envcrust::topology

@@ -1,5 +1,5 @@
 // orient_along_normals: pieces facing against their samples' normals are turned over, whole.
-#include "envcrust/mesh.h"
+#include "envcrust/topology.h"
 #include "fixtures/shapes.h"
 
 #include <gtest/gtest.h>
@@ -41,10 +41,10 @@ TEST(OrientAlongNormals, turns_only_the_pieces_that_face_against_their_samples) 
       points.emplace_back(2.05 + 0.1 * i, 0.05 + 0.1 * j, 0.0);
       normals.emplace_back(0, 0, j == 3 ? 1 : -1);
     }
-  EXPECT_EQ(mesh::orient_along_normals(mesh, points, normals), 1u);
+  EXPECT_EQ(topology::orient_along_normals(mesh, points, normals), 1u);
   EXPECT_EQ(facing(mesh, 0, half), 1);
   EXPECT_EQ(facing(mesh, half, 2 * half), -1);
   // Already facing like the normals: nothing to turn.
-  EXPECT_EQ(mesh::orient_along_normals(mesh, points, normals), 0u);
-  EXPECT_EQ(mesh::orient_along_normals(mesh, {}, {}), 0u);
+  EXPECT_EQ(topology::orient_along_normals(mesh, points, normals), 0u);
+  EXPECT_EQ(topology::orient_along_normals(mesh, {}, {}), 0u);
 }
