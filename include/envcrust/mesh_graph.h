@@ -28,6 +28,10 @@ int direction_along(const std::array<Index, 3>& face, Index a, Index b);
 /// Build the edge table. Faces must have three distinct, in-range vertices.
 MeshGraph build_mesh_graph(std::vector<std::array<Index, 3>> faces, std::size_t num_vertices);
 
+/// Components of the faces joined through any shared edge: label[f] in [0, count), numbered
+/// in order of their first face. @returns count.
+std::uint32_t face_components(const MeshGraph& graph, std::vector<std::uint32_t>& label);
+
 /// Number of fans of faces around each vertex (faces joined through edges at that vertex).
 /// A manifold vertex has exactly one fan.
 std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& graph);

@@ -112,4 +112,12 @@ std::vector<std::uint32_t> count_vertex_fans(const MeshGraph& g) {
   return fans;
 }
 
+std::uint32_t face_components(const MeshGraph& graph, std::vector<std::uint32_t>& label) {
+  UnionFind uf(graph.faces.size());
+  for (std::size_t e = 0; e < graph.edges.size(); ++e)
+    for (std::uint32_t k = graph.edge_face_begin[e] + 1; k < graph.edge_face_begin[e + 1]; ++k)
+      uf.unite(graph.edge_faces[graph.edge_face_begin[e]], graph.edge_faces[k]);
+  return uf.label_sets(label);
+}
+
 }  // namespace envcrust::topology

@@ -79,12 +79,8 @@ std::size_t orient_along_normals(TriangleMesh& mesh, const std::vector<Point3>& 
   // Pieces: faces joined through edges (repeated-vertex faces belong to none and stay).
   std::vector<std::uint32_t> kept;
   const MeshGraph g = graph_of_proper_faces(mesh, kept);
-  UnionFind uf(g.faces.size());
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    for (std::uint32_t k = g.edge_face_begin[e] + 1; k < g.edge_face_begin[e + 1]; ++k)
-      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[k]);
   std::vector<std::uint32_t> piece;
-  const std::uint32_t count = uf.label_sets(piece);
+  const std::uint32_t count = face_components(g, piece);
   // Per face: its area vector against the normal of the sample nearest to its centre.
   std::vector<double> agreement(g.faces.size());
   const NearestIndex nearest(points);

@@ -5,7 +5,6 @@
 
 #include "boundary_loops.h"
 #include "envcrust/mesh_graph.h"
-#include "envcrust/union_find.h"
 
 #include <algorithm>
 #include <string>
@@ -95,12 +94,8 @@ MeshTopology analyze_topology(const TriangleMesh& input, const TopologyOptions& 
                              static_cast<long>(out.faces);
 
   // Components: faces joined through any shared edge.
-  UnionFind uf(g.faces.size());
-  for (std::size_t e = 0; e < g.edges.size(); ++e)
-    for (std::uint32_t i = g.edge_face_begin[e] + 1; i < g.edge_face_begin[e + 1]; ++i)
-      uf.unite(g.edge_faces[g.edge_face_begin[e]], g.edge_faces[i]);
   std::vector<std::uint32_t> component;
-  const std::uint32_t num_components = uf.label_sets(component);
+  const std::uint32_t num_components = face_components(g, component);
   out.components.resize(num_components);
   const Orientation orientation = orient_components(g, component, num_components);
 
