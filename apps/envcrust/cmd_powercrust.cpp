@@ -75,7 +75,8 @@ void run_powercrust(PowerCrustCommand& cmd) {
       {"duplicate_points", s.duplicate_points}, {"delaunay_cells", s.delaunay_cells}, {"poles", s.poles},
       {"inner_poles", s.inner_poles}, {"outer_poles", s.outer_poles}, {"unknown_poles", s.unknown_poles},
       {"resolved_unknown_poles", s.resolved_unknown_poles}, {"hidden_poles", s.hidden_poles},
-      {"filtered_poles", s.filtered_poles},
+      {"filtered_poles", s.filtered_poles}, {"bad_second_poles", s.bad_second_poles},
+      {"bad_poles_left_out", s.bad_poles_left_out},
       {"crust_faces", s.crust_faces},
       {"crust", {{"euler_characteristic", crust.euler_characteristic}, {"is_closed", crust.is_closed()},
                  {"is_manifold", crust.is_manifold()}, {"components", crust.components.size()},
@@ -94,6 +95,10 @@ void run_powercrust(PowerCrustCommand& cmd) {
             << " out, " << s.unknown_poles << " unknown"
             << (s.filtered_poles > 0 ? ", " + std::to_string(s.filtered_poles) + " below --min-pole-radius left out"
                                      : std::string())
+            << (s.bad_second_poles > 0 ? ", " + std::to_string(s.bad_second_poles) +
+                                             " second poles nearer than the --sampling-estimate bound (" +
+                                             std::to_string(s.bad_poles_left_out) + " poles left out)"
+                                       : std::string())
             << "), " << s.crust_faces << " crust triangles\n"
             << "  crust: chi " << crust.euler_characteristic << ", " << (crust.is_closed() ? "closed" : "open")
             << ", " << (crust.is_manifold() ? "manifold" : "non-manifold") << "\n"
@@ -122,7 +127,7 @@ void register_powercrust(CLI::App& app) {
   const std::map<std::string, powercrust::LabelPreset> presets = {{"code", powercrust::LabelPreset::Code},
                                                                   {"readme", powercrust::LabelPreset::Readme}};
   sub->add_option("--preset", cmd->options.preset,
-                  "Labeling thresholds: 'code' (0/0, what the original program runs) or 'readme' (0.4/0.3)")
+                  "Labeling thresholds: 'code' (0/0, what the original program runs) or 'readme' (0.4/0.3 and --sampling-estimate 0.6, what its README gives)")
       ->transform(CLI::CheckedTransformer(presets, CLI::ignore_case));
   sub->add_option("--neighbor-threshold", cmd->options.neighbor_threshold,
                   "Neighbour-rule threshold on the ball intersection angle (original -t), overrides the preset");
@@ -141,6 +146,14 @@ void register_powercrust(CLI::App& app) {
                   "(handles, bubbles); 3 suits 0.1% noise; 0: off, as the original")
       ->check(number_above(0, true))
       ->capture_default_str();
+  sub->add_option("--sampling-estimate", cmd->options.sampling_estimate,
+                  "The original's -R r (the input an r-sample): a second pole nearer to its sample than the "
+                  "local-feature-size bound the Voronoi vertices near the tangent plane give is left out and not "
+                  "paired (default: 1 = off, as the original runs; 0.6 with --preset readme)")
+      ->check(CLI::Range(0.0, 1.0));
+  sub->add_flag("--drop-bad-pole-pairs", cmd->options.drop_both_bad_poles,
+                "With --sampling-estimate below 1: a sample with a bad second pole loses its first pole too "
+                "(the original's -B)");
   sub->add_flag("--keep-unknown", cmd->keep_unknown,
                 "Leave poles the labeling could not decide unlabeled, as the original does (may open the crust)");
   add_common_flags(*sub, cmd->common);

@@ -21,7 +21,8 @@ enum class PoleLabel : std::uint8_t { Unknown, In, Out };
 inline constexpr Index kNoPole = std::numeric_limits<Index>::max();
 
 /// Threshold presets of the labeling (METHOD.md 4.7): the values the original program runs
-/// with (`Code`: theta 0, theta2 0) or the ones its README claims (`Readme`: 0.4 / 0.3).
+/// with (`Code`: theta 0, theta2 0, no -R) or the ones its README claims (`Readme`: 0.4 / 0.3,
+/// sampling_estimate 0.6).
 enum class LabelPreset { Code, Readme };
 
 /// Options of power_crust. Defaults reproduce the original program's behaviour, except that
@@ -70,6 +71,19 @@ struct PowerCrustOptions {
   /// They are kept as hidden poles (labelled like the pole whose cell holds them). 0: off
   /// (the original program's behaviour). Range >= 0.
   double min_pole_radius_rel_spacing = 0.0;
+  /// The original's -R r, an estimate of the sampling density (the input an r-sample): per
+  /// sample s, every Voronoi vertex v of its cell seen from s within 2r radians of the tangent
+  /// plane (|cos angle(v - s, p+ - s)| < cos 2r) bounds lfs(s) from below by
+  /// |v - s| (sin angle - r) / r, and a second pole nearer to s than that bound is bad: left
+  /// out of the power diagram unless another sample keeps it (then hidden, labelled like the
+  /// pole that holds it) and not paired with p+ for the opposite rule. 1 is off (what the
+  /// original's main() runs); unset: the preset's (Code 1, Readme 0.6, the value its README
+  /// gives). Range (0, 1].
+  std::optional<double> sampling_estimate;
+  /// With sampling_estimate < 1: a sample with a bad second pole loses its first pole too
+  /// (the original's -B). Off: the first pole stays (the original then defers its labeling,
+  /// which is not reproduced here: it is labeled by the same passes as the others).
+  bool drop_both_bad_poles = false;
 };
 
 /// One pole: a Voronoi vertex of the samples (a Delaunay cell's circumcentre) chosen as p+ or
@@ -87,6 +101,9 @@ struct SamplePoles {
   Index outer = 0;  ///< p+: farthest Voronoi vertex of the sample's cell
   Index inner = 0;  ///< p-: farthest on the other side
   double weight = 0.0;
+  /// False when the second pole was bad (PowerCrustOptions::sampling_estimate): the pair
+  /// takes no part in the opposite rule.
+  bool is_paired = true;
 };
 
 /// A finite cell of the Delaunay triangulation of the samples and the 8 bounding points, with
@@ -118,6 +135,9 @@ struct PowerCrustStats {
   /// resolved_unknown_poles: of those, labeled by options.resolve_unknown.
   std::size_t inner_poles = 0, outer_poles = 0, unknown_poles = 0, hidden_poles = 0;
   std::size_t filtered_poles = 0;  ///< left out by min_pole_radius_rel_spacing (counted as hidden too)
+  /// Samples whose second pole was bad (sampling_estimate), and poles left out for it
+  /// (counted as hidden too).
+  std::size_t bad_second_poles = 0, bad_poles_left_out = 0;
   std::size_t resolved_unknown_poles = 0;
   std::size_t power_diagram_cells = 0;   ///< finite cells of the regular triangulation
   std::size_t crust_polygons = 0;        ///< power faces between In and Out cells

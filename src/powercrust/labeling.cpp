@@ -83,12 +83,14 @@ struct OppositeLists {
 OppositeLists opposite_lists(std::size_t pole_count, const std::vector<SamplePoles>& sample_poles) {
   OppositeLists o;
   o.offsets.assign(pole_count + 1, 0);
-  for (const auto& sp : sample_poles) ++o.offsets[sp.outer + 1], ++o.offsets[sp.inner + 1];
+  for (const auto& sp : sample_poles)
+    if (sp.is_paired) ++o.offsets[sp.outer + 1], ++o.offsets[sp.inner + 1];
   for (std::size_t p = 0; p < pole_count; ++p) o.offsets[p + 1] += o.offsets[p];
   o.poles.resize(o.offsets.back());
   o.weights.resize(o.offsets.back());
   std::vector<std::size_t> fill(o.offsets.begin(), o.offsets.end() - 1);
   for (const auto& sp : sample_poles) {
+    if (!sp.is_paired) continue;
     o.poles[fill[sp.outer]] = sp.inner, o.weights[fill[sp.outer]++] = sp.weight;
     o.poles[fill[sp.inner]] = sp.outer, o.weights[fill[sp.inner]++] = sp.weight;
   }

@@ -35,7 +35,13 @@ Thresholds check_options(const PowerCrustOptions& options) {
     throw InvalidOptions("PowerCrustOptions.min_pole_radius_rel_spacing must be a finite number >= 0 (got " +
                          format_value(options.min_pole_radius_rel_spacing) + ")");
   Thresholds t;
-  if (options.preset == LabelPreset::Readme) t = {0.4, 0.3};
+  if (options.preset == LabelPreset::Readme) t = {0.4, 0.3, 0.6};
+  if (options.sampling_estimate) {
+    if (!(*options.sampling_estimate > 0.0 && *options.sampling_estimate <= 1.0))
+      throw InvalidOptions("PowerCrustOptions.sampling_estimate must be in (0, 1] (got " +
+                           format_value(*options.sampling_estimate) + ")");
+    t.sampling_estimate = *options.sampling_estimate;
+  }
   if (options.neighbor_threshold)
     t.neighbor = check_unit_range("neighbor_threshold", *options.neighbor_threshold);
   if (options.second_pass_threshold)

@@ -137,8 +137,11 @@ class SampleLocks {
 // per sample on an exact torus) was the stage's peak memory, and collecting each sample's
 // cells cost a hash-set walk per sample.
 // With `nearest`, also each sample's distance to its nearest other sample (a Delaunay
-// neighbour) in the same pass.
-std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vector<double>* nearest) {
+// neighbour) in the same pass; with `lfs_lower` (and r < 1), each sample's lower bound on the
+// local feature size from the Voronoi vertices near its tangent plane, in the second pass
+// (PowerCrustOptions::sampling_estimate).
+std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vector<double>* nearest,
+                                     double r = 1.0, std::vector<double>* lfs_lower = nullptr) {
   SampleLocks locks(n);
   std::vector<Candidate> outer(n);
   if (nearest) nearest->assign(n, std::numeric_limits<double>::infinity());
@@ -168,17 +171,29 @@ std::vector<PoleChoice> choose_poles(const Delaunay& dt, std::size_t n, std::vec
   });
   outer = {};
   std::vector<Candidate> inner(n), fallback(n);
+  const bool bound_lfs = lfs_lower != nullptr && r < 1.0;
+  if (bound_lfs) lfs_lower->assign(n, 0.0);
+  const double cos_2r = std::cos(2.0 * r);
   parallel_for_each_finite_cell(dt, [&](Cell c) {
     const Point3 centre = circumcentre(c);
     for (int j = 0; j < 4; ++j) {
       const auto v = c->vertex(j);
       if (v->info() >= n) continue;
       const Point3& s = v->point();
-      const double dot = (centre - s) * (chosen[v->info()].centres[0] - s);
+      const Vector3 to_outer = chosen[v->info()].centres[0] - s;
+      const double dot = (centre - s) * to_outer;
       const double d = CGAL::squared_distance(centre, s);
+      // A Voronoi vertex near the tangent plane lies about lfs away at most: its distance and
+      // angle bound lfs(s) from below for an r-sample.
+      double bound = 0.0;
+      if (bound_lfs && d > 0) {
+        const double cosine = dot / std::sqrt(d * to_outer.squared_length());
+        if (std::abs(cosine) < cos_2r) bound = std::sqrt(d) / r * (std::sqrt(1.0 - cosine * cosine) - r);
+      }
       locks.with(v->info(), [&] {
         if (dot <= 0 && ranks_above(d, centre, c, inner[v->info()])) inner[v->info()] = {d, c};
         if (ranks_above(-dot, centre, c, fallback[v->info()])) fallback[v->info()] = {-dot, c};
+        if (bound_lfs) (*lfs_lower)[v->info()] = std::max((*lfs_lower)[v->info()], bound);
       });
     }
   });
@@ -322,12 +337,19 @@ std::vector<double> median_neighbour_spacing(const Delaunay& dt, const std::vect
 }  // namespace
 
 PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells,
-                        bool local_spacing) {
+                        bool local_spacing, double sampling_estimate) {
   const std::size_t n = samples.size();
   PoleStage out;
   out.finite_cells = dt->number_of_finite_cells();
-  std::vector<double> nearest;
-  std::vector<PoleChoice> chosen = choose_poles(*dt, n, local_spacing ? &nearest : nullptr);
+  std::vector<double> nearest, lfs_lower;
+  std::vector<PoleChoice> chosen =
+      choose_poles(*dt, n, local_spacing ? &nearest : nullptr, sampling_estimate, &lfs_lower);
+  if (!lfs_lower.empty()) {
+    out.bad_inner.resize(n);
+    parallel_indices(n, [&](std::size_t i) {
+      out.bad_inner[i] = CGAL::squared_distance(chosen[i].centres[1], samples[i]) < CGAL::square(lfs_lower[i]);
+    });
+  }
   if (local_spacing) out.local_spacing = median_neighbour_spacing(*dt, nearest);
   // The triangulation is the largest object of the run: free it as soon as the poles are
   // chosen (the power diagram comes next, and the two are never held together, METHOD 4.11).
@@ -363,6 +385,7 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
     }
     out.sample_poles[i] = {choice_pole[2 * j], choice_pole[2 * j + 1],
                            opposite_weight(samples[i], chosen[i].centres[0], chosen[i].centres[1])};
+    if (!out.bad_inner.empty() && out.bad_inner[i]) out.sample_poles[i].is_paired = false;
   }
   chosen = {};
   const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());

@@ -52,6 +52,19 @@ std::vector<bool> small_poles(const PowerCrustResult& result, const std::vector<
   return skip;
 }
 
+// Poles that only bad choices made (PowerCrustOptions::sampling_estimate): a bad second pole,
+// and with drop_both the first pole of its sample, unless another sample keeps the pole.
+std::vector<bool> bad_poles(const PowerCrustResult& result, const std::vector<char>& bad_inner, bool drop_both) {
+  if (bad_inner.empty()) return {};
+  std::vector<bool> kept(result.poles.size(), false);
+  for (std::size_t i = 0; i < result.samples.size(); ++i) {
+    if (!(bad_inner[i] && drop_both)) kept[result.sample_poles[i].outer] = true;
+    if (!bad_inner[i]) kept[result.sample_poles[i].inner] = true;
+  }
+  kept.flip();
+  return kept;
+}
+
 }  // namespace
 
 PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrustOptions& options,
@@ -78,6 +91,7 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   };
   StageClock clock(progress);
   std::vector<double> local_spacing;
+  std::vector<char> bad_inner;
   {
     clock.begin("delaunay");
     std::unique_ptr<Delaunay> dt = build_delaunay(result.samples, result.bounding_points,
@@ -87,11 +101,12 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     // compute_poles frees the DT, the largest object besides the RT: the two are never held
     // together (METHOD 4.11).
     PoleStage poles = compute_poles(std::move(dt), result.samples, options.keep_delaunay_cells,
-                                     options.min_pole_radius_rel_spacing > 0);
+                                     options.min_pole_radius_rel_spacing > 0, thresholds.sampling_estimate);
     result.poles = std::move(poles.poles);
     result.sample_poles = std::move(poles.sample_poles);
     result.delaunay_cells = std::move(poles.cells);
     local_spacing = std::move(poles.local_spacing);
+    bad_inner = std::move(poles.bad_inner);
     stats.delaunay_cells = poles.finite_cells;
     stats.welded_poles = poles.welded_poles;
     stats.poles = result.poles.size();
@@ -100,8 +115,16 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
 
   clock.begin("power_diagram");
   const CGAL::Bbox_3 sample_box = CGAL::bbox_3(result.samples.begin(), result.samples.end());
-  const std::vector<bool> skip = small_poles(result, local_spacing, options.min_pole_radius_rel_spacing);
+  std::vector<bool> skip = small_poles(result, local_spacing, options.min_pole_radius_rel_spacing);
   stats.filtered_poles = static_cast<std::size_t>(std::count(skip.begin(), skip.end(), true));
+  if (const std::vector<bool> bad = bad_poles(result, bad_inner, options.drop_both_bad_poles); !bad.empty()) {
+    stats.bad_second_poles = static_cast<std::size_t>(std::count(bad_inner.begin(), bad_inner.end(), 1));
+    skip.resize(result.poles.size(), false);
+    for (std::size_t p = 0; p < bad.size(); ++p) {
+      stats.bad_poles_left_out += bad[p] && !skip[p];
+      skip[p] = skip[p] || bad[p];
+    }
+  }
   const PowerDiagram diagram =
       build_power_diagram(result.poles, sample_box, parallel(result.poles.size()),
                           options.pole_joggle, skip);

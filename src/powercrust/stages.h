@@ -18,6 +18,7 @@ namespace envcrust::powercrust {
 struct Thresholds {
   double neighbor = 0.0;     ///< theta (-t)
   double second_pass = 0.0;  ///< theta2 (-w)
+  double sampling_estimate = 1.0;  ///< r (-R); 1: off
 };
 
 /// Validate the options and resolve the preset.
@@ -38,6 +39,9 @@ struct PoleStage {
   std::vector<double> local_spacing;
   std::size_t finite_cells = 0;
   std::size_t welded_poles = 0;
+  /// Per sample, with sampling_estimate < 1: 1 when its second pole is nearer than the lfs
+  /// bound (PowerCrustOptions::sampling_estimate); empty otherwise.
+  std::vector<char> bad_inner;
 };
 
 /// Compute Voronoi vertices, poles (welded where balls agree to ~1e-11 diag, ids in the
@@ -45,7 +49,7 @@ struct PoleStage {
 /// the poles are chosen. With `local_spacing`, also each sample's local spacing (the median
 /// nearest-neighbour distance over it and its Delaunay neighbours).
 PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells,
-                        bool local_spacing);
+                        bool local_spacing, double sampling_estimate = 1.0);
 
 /// What labeling did beyond setting Pole::label.
 struct LabelingReport {

@@ -425,6 +425,21 @@ TEST_F(CliTest, powercrust_leaves_out_small_poles_of_a_noisy_sample) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+TEST_F(CliTest, powercrust_sampling_estimate_reports_bad_second_poles) {
+  ASSERT_EQ(run_envcrust("sample sphere -n 10000 --noise 0.001 --seed 1 -q -o " + path("s.xyz")).exit_code, 0);
+  const auto j = run_envcrust_json("powercrust " + path("s.xyz") + " --sampling-estimate 0.6 -o " + path("s.ply") +
+                                   " --json");
+  EXPECT_GT(j["bad_second_poles"].get<std::size_t>(), 0u);  // measured 51
+  EXPECT_GT(j["bad_poles_left_out"].get<std::size_t>(), 0u);
+  EXPECT_EQ(j["crust"]["euler_characteristic"], 2);
+  const auto text = run_envcrust("powercrust " + path("s.xyz") + " --sampling-estimate 0.6 --drop-bad-pole-pairs -o " +
+                                 path("t.ply"));
+  EXPECT_NE(text.out.find("second poles nearer than the --sampling-estimate bound"), std::string::npos) << text.out;
+  const auto zero = run_envcrust("powercrust " + path("s.xyz") + " --sampling-estimate 1.5 -o " + path("x.ply"));
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 TEST_F(CliTest, powercrust_refuses_coplanar_points) {
   {
     std::ofstream f(path("flat.xyz"));

@@ -99,6 +99,10 @@ TEST(PowerCrustChecks, options_out_of_range_name_field_and_value) {
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
             "PowerCrustOptions.second_pass_threshold must be in [-1, 1] (got -1.5)");
   options = {};
+  options.sampling_estimate = 0.0;
+  EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
+            "PowerCrustOptions.sampling_estimate must be in (0, 1] (got 0)");
+  options = {};
   options.min_pole_radius_rel_spacing = -1.0;
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
             "PowerCrustOptions.min_pole_radius_rel_spacing must be a finite number >= 0 (got -1)");

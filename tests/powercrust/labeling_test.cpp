@@ -21,7 +21,15 @@ TEST(PowerCrustLabeling, both_presets_give_a_closed_sphere) {
     EXPECT_TRUE(t.is_closed());
     EXPECT_TRUE(t.is_manifold());
     EXPECT_EQ(t.euler_characteristic, 2);
-    EXPECT_EQ(result.stats.unknown_poles, 0u);
+    if (preset == LabelPreset::Code) {
+      EXPECT_EQ(result.stats.unknown_poles, 0u);
+    } else {
+      // The README preset's sampling estimate (r 0.6) unpairs the samples whose second pole
+      // is a noise pole; a few of their first poles are then left to the fallback (measured
+      // 3), which labels them all.
+      EXPECT_LE(result.stats.unknown_poles, result.stats.bad_second_poles);
+      EXPECT_EQ(result.stats.resolved_unknown_poles, result.stats.unknown_poles);
+    }
     EXPECT_EQ(result.stats.inner_poles + result.stats.outer_poles, result.stats.poles);
   }
 }

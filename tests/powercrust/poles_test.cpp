@@ -63,6 +63,49 @@ TEST(PowerCrustPoles, exact_torus_poles_fall_on_the_side_of_their_label_and_inne
   EXPECT_GT(static_cast<double>(near_core), 0.9 * static_cast<double>(inner));
 }
 
+TEST(PowerCrustPoles, the_sampling_estimate_finds_no_bad_pole_on_an_exact_sphere) {
+  const auto points = test_support::sample_builtin("sphere", 10000, 0.0);
+  PowerCrustOptions options;
+  options.sampling_estimate = 0.6;
+  const auto result = power_crust(points, options);
+  EXPECT_EQ(result.stats.bad_second_poles, 0u);
+  EXPECT_EQ(result.stats.bad_poles_left_out, 0u);
+}
+
+TEST(PowerCrustPoles, bad_second_poles_of_a_noisy_sphere_are_noise_poles_near_its_surface) {
+  // 0.1% noise: some samples' second pole is a small ball hugging the surface, which the
+  // original's -R bound (r 0.6) calls bad (measured 51 of 10,000). They are unpaired, left out
+  // unless another sample keeps them, and the crust stays a sphere.
+  const auto points = test_support::sample_builtin("sphere", 10000, 0.001);
+  PowerCrustOptions options;
+  options.sampling_estimate = 0.6;
+  const auto result = power_crust(points, options);
+  ASSERT_GT(result.stats.bad_second_poles, 10u);
+  ASSERT_GT(result.stats.bad_poles_left_out, 10u);
+  std::size_t unpaired = 0;
+  for (std::size_t i = 0; i < result.samples.size(); ++i) {
+    const auto& sp = result.sample_poles[i];
+    if (sp.is_paired) continue;
+    ++unpaired;
+    const Pole& inner = result.poles[sp.inner];
+    EXPECT_LT(inner.radius, 0.1);                           // a tenth of the sphere's radius
+    EXPECT_GT(norm(inner.center), 0.8);                     // near the surface, not the centre
+  }
+  EXPECT_EQ(unpaired, result.stats.bad_second_poles);
+  const auto t = test_support::crust_topology(result.crust);
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_EQ(t.euler_characteristic, 2);
+  // -B also drops the first poles of those samples (unless kept by another sample).
+  options.drop_both_bad_poles = true;
+  const auto both = power_crust(points, options);
+  EXPECT_EQ(both.stats.bad_second_poles, result.stats.bad_second_poles);
+  EXPECT_GT(both.stats.bad_poles_left_out, result.stats.bad_poles_left_out);
+  // The README preset runs r 0.6.
+  PowerCrustOptions readme;
+  readme.preset = LabelPreset::Readme;
+  EXPECT_EQ(power_crust(points, readme).stats.bad_second_poles, result.stats.bad_second_poles);
+}
+
 TEST(PowerCrustPoles, noisy_inner_poles_outside_the_crust_are_shallow_noise_poles) {
   // Noise makes small polar balls hugging the surface; propagation labels some In although
   // their centre lies just outside the crust (measured: 30 of ~10k on this torus).
