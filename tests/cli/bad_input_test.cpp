@@ -18,7 +18,7 @@ namespace {
 
 struct BadFile {
   const char* name;
-  std::string bytes;  // nullptr-free content; "<absent>" means: do not create the file
+  std::string bytes;  // the file's content; "<absent>": the file is not created
   const char* problem;
 };
 
@@ -31,11 +31,12 @@ std::string truncated_ply() {
 
 class BadInputFile : public CliTest {
  protected:
-  // `envcrust ARGS` exits 1 with exactly "envcrust: error: FILE<problem>" and writes no out.ply.
-  void expect_refused(const std::string& command, const BadFile& bad) {
+  // `envcrust COMMAND FILE [-o out.ply]` exits 1 with exactly "envcrust: error: FILE<problem>"
+  // and writes no out.ply.
+  void expect_refused(const std::string& command, const BadFile& bad, bool has_output = true) {
     const std::string file = path(bad.name);
     if (bad.bytes != "<absent>") std::ofstream(file, std::ios::binary) << bad.bytes;
-    const auto r = run_envcrust(command + " " + file + " -o " + path("out.ply"));
+    const auto r = run_envcrust(command + " " + file + (has_output ? " -o " + path("out.ply") : std::string()));
     EXPECT_EQ(r.exit_code, 1) << bad.name;
     EXPECT_EQ(r.err, "envcrust: error: " + file + bad.problem + "\n") << bad.name;
     EXPECT_FALSE(std::filesystem::exists(path("out.ply"))) << bad.name;
@@ -68,13 +69,7 @@ TEST_F(BadInputFile, analyze_refuses_point_files_and_broken_meshes_by_name) {
       {"trunc.ply", truncated_ply(), ": truncated binary data (vertex 0 of 3)"},
       {"trunc.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", ": unexpected end of file (vertex 2 of 3)"},
   };
-  for (const auto& bad : cases) {
-    const std::string file = path(bad.name);
-    if (bad.bytes != "<absent>") std::ofstream(file, std::ios::binary) << bad.bytes;
-    const auto r = run_envcrust("analyze " + file);
-    EXPECT_EQ(r.exit_code, 1) << bad.name;
-    EXPECT_EQ(r.err, "envcrust: error: " + file + bad.problem + "\n") << bad.name;
-  }
+  for (const auto& bad : cases) expect_refused("analyze", bad, false);
 }
 
 TEST_F(CliTest, analyze_curve_that_no_projection_resolves_names_the_file) {
