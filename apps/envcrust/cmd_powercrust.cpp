@@ -76,7 +76,7 @@ void run_powercrust(PowerCrustCommand& cmd) {
       {"inner_poles", s.inner_poles}, {"outer_poles", s.outer_poles}, {"unknown_poles", s.unknown_poles},
       {"resolved_unknown_poles", s.resolved_unknown_poles}, {"hidden_poles", s.hidden_poles},
       {"filtered_poles", s.filtered_poles}, {"bad_second_poles", s.bad_second_poles},
-      {"bad_poles_left_out", s.bad_poles_left_out},
+      {"bad_poles_left_out", s.bad_poles_left_out}, {"deferred_poles", s.deferred_poles},
       {"crust_faces", s.crust_faces},
       {"crust", {{"euler_characteristic", crust.euler_characteristic}, {"is_closed", crust.is_closed()},
                  {"is_manifold", crust.is_manifold()}, {"components", crust.components.size()},
@@ -154,6 +154,9 @@ void register_powercrust(CLI::App& app) {
   sub->add_flag("--drop-bad-pole-pairs", cmd->options.drop_both_bad_poles,
                 "With --sampling-estimate below 1: a sample with a bad second pole loses its first pole too "
                 "(the original's -B)");
+  sub->add_flag("--defer-bad-first-poles", cmd->options.defer_bad_first_poles,
+                "With --sampling-estimate below 1: the first poles of samples with a bad second pole are labeled "
+                "last, by the second pass (the original's -D, advised for open surfaces)");
   sub->add_flag("--keep-unknown", cmd->keep_unknown,
                 "Leave poles the labeling could not decide unlabeled, as the original does (may open the crust)");
   add_common_flags(*sub, cmd->common);

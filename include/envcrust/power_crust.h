@@ -81,9 +81,12 @@ struct PowerCrustOptions {
   /// gives). Range (0, 1].
   std::optional<double> sampling_estimate;
   /// With sampling_estimate < 1: a sample with a bad second pole loses its first pole too
-  /// (the original's -B). Off: the first pole stays (the original then defers its labeling,
-  /// which is not reproduced here: it is labeled by the same passes as the others).
+  /// (the original's -B).
   bool drop_both_bad_poles = false;
+  /// With sampling_estimate < 1 and not drop_both_bad_poles: the first poles of samples with a
+  /// bad second pole are labeled last (the original's -D, advised for open surfaces): the
+  /// priority queue passes them by, and the second pass decides them from their neighbours.
+  bool defer_bad_first_poles = false;
 };
 
 /// One pole: a Voronoi vertex of the samples (a Delaunay cell's circumcentre) chosen as p+ or
@@ -138,6 +141,7 @@ struct PowerCrustStats {
   /// Samples whose second pole was bad (sampling_estimate), and poles left out for it
   /// (counted as hidden too).
   std::size_t bad_second_poles = 0, bad_poles_left_out = 0;
+  std::size_t deferred_poles = 0;  ///< first poles labeled last (defer_bad_first_poles)
   std::size_t resolved_unknown_poles = 0;
   std::size_t power_diagram_cells = 0;   ///< finite cells of the regular triangulation
   std::size_t crust_polygons = 0;        ///< power faces between In and Out cells

@@ -100,8 +100,8 @@ OppositeLists opposite_lists(std::size_t pole_count, const std::vector<SamplePol
 class Labeler {
  public:
   Labeler(std::vector<Pole>& poles, const OppositeLists& opposite, const PoleGraph& graph,
-          double theta)
-      : poles_(poles), opposite_(opposite), graph_(graph), theta_(theta),
+          double theta, const std::vector<bool>& deferred)
+      : poles_(poles), opposite_(opposite), graph_(graph), theta_(theta), deferred_(deferred),
         in_(poles.size(), 0.0), out_(poles.size(), 0.0), heap_(poles.size()) {}
 
   void seed_outside(const CGAL::Bbox_3& box) {
@@ -148,6 +148,7 @@ class Labeler {
     return std::abs(in_[q] - out_[q]) - 1.0;  // conflicting evidence: decide last
   }
   void raise(std::vector<double>& value, Index q, double candidate) {
+    if (!deferred_.empty() && deferred_[q]) return;  // labeled by the second pass
     // An unlabeled pole outside the heap was never reached, so its values are still 0.
     if (heap_.contains(q) && !(candidate > value[q])) return;
     value[q] = candidate;
@@ -158,6 +159,7 @@ class Labeler {
   const OppositeLists& opposite_;
   const PoleGraph& graph_;
   double theta_;
+  const std::vector<bool>& deferred_;
   std::vector<double> in_, out_;
   PoleHeap heap_;
 };
@@ -233,11 +235,11 @@ std::size_t resolve_unknown(std::vector<Pole>& poles, const OppositeLists& o, co
 
 LabelingReport label_poles(std::vector<Pole>& poles, const std::vector<SamplePoles>& sample_poles,
                            const PoleGraph& graph, const Thresholds& thresholds,
-                           const CGAL::Bbox_3& sample_bbox, bool resolve) {
+                           const CGAL::Bbox_3& sample_bbox, bool resolve, const std::vector<bool>& deferred) {
   const OppositeLists opposite = opposite_lists(poles.size(), sample_poles);
   for (auto& p : poles) p.label = PoleLabel::Unknown;
   {
-    Labeler labeler(poles, opposite, graph, thresholds.neighbor);
+    Labeler labeler(poles, opposite, graph, thresholds.neighbor, deferred);
     labeler.seed_outside(sample_bbox);
     labeler.propagate_all();
   }

@@ -117,12 +117,19 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   const CGAL::Bbox_3 sample_box = CGAL::bbox_3(result.samples.begin(), result.samples.end());
   std::vector<bool> skip = small_poles(result, local_spacing, options.min_pole_radius_rel_spacing);
   stats.filtered_poles = static_cast<std::size_t>(std::count(skip.begin(), skip.end(), true));
+  std::vector<bool> deferred;
   if (const std::vector<bool> bad = bad_poles(result, bad_inner, options.drop_both_bad_poles); !bad.empty()) {
     stats.bad_second_poles = static_cast<std::size_t>(std::count(bad_inner.begin(), bad_inner.end(), 1));
     skip.resize(result.poles.size(), false);
     for (std::size_t p = 0; p < bad.size(); ++p) {
       stats.bad_poles_left_out += bad[p] && !skip[p];
       skip[p] = skip[p] || bad[p];
+    }
+    if (options.defer_bad_first_poles && !options.drop_both_bad_poles) {
+      deferred.assign(result.poles.size(), false);
+      for (std::size_t i = 0; i < bad_inner.size(); ++i)
+        if (bad_inner[i]) deferred[result.sample_poles[i].outer] = true;
+      stats.deferred_poles = static_cast<std::size_t>(std::count(deferred.begin(), deferred.end(), true));
     }
   }
   const PowerDiagram diagram =
@@ -136,7 +143,7 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     const PoleGraph graph = build_pole_graph(diagram, result.poles);
     const LabelingReport report =
         label_poles(result.poles, result.sample_poles, graph, thresholds, sample_box,
-                    options.resolve_unknown);
+                    options.resolve_unknown, deferred);
     stats.unknown_poles = report.unknown_after_second_pass;
     stats.resolved_unknown_poles = report.resolved;
     if (report.unknown_after_second_pass > 0)

@@ -58,9 +58,12 @@ struct LabelingReport {
 };
 
 /// The priority-queue labeling of [pc] label.c with its second pass (METHOD 4.7).
+/// Poles flagged in `deferred` (empty: none) are not labeled by the priority queue, only by
+/// the second pass and the fallback.
 LabelingReport label_poles(std::vector<Pole>& poles, const std::vector<SamplePoles>& sample_poles,
                            const PoleGraph& graph, const Thresholds& thresholds,
-                           const CGAL::Bbox_3& sample_bbox, bool resolve_unknown);
+                           const CGAL::Bbox_3& sample_bbox, bool resolve_unknown,
+                           const std::vector<bool>& deferred = {});
 
 /// The crust and where each triangle came from (METHOD 4.8).
 struct CrustStage {

@@ -100,6 +100,17 @@ TEST(PowerCrustPoles, bad_second_poles_of_a_noisy_sphere_are_noise_poles_near_it
   const auto both = power_crust(points, options);
   EXPECT_EQ(both.stats.bad_second_poles, result.stats.bad_second_poles);
   EXPECT_GT(both.stats.bad_poles_left_out, result.stats.bad_poles_left_out);
+  // -D instead: those samples' first poles are labeled last, by the second pass, and the
+  // crust is still the sphere.
+  options.drop_both_bad_poles = false;
+  options.defer_bad_first_poles = true;
+  const auto deferred = power_crust(points, options);
+  EXPECT_GT(deferred.stats.deferred_poles, 0u);
+  EXPECT_LE(deferred.stats.deferred_poles, deferred.stats.bad_second_poles);
+  EXPECT_EQ(deferred.stats.unknown_poles, deferred.stats.resolved_unknown_poles);
+  const auto td = test_support::crust_topology(deferred.crust);
+  EXPECT_TRUE(td.is_closed());
+  EXPECT_EQ(td.euler_characteristic, 2);
   // The README preset runs r 0.6.
   PowerCrustOptions readme;
   readme.preset = LabelPreset::Readme;
