@@ -344,10 +344,11 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
   std::vector<double> nearest, lfs_lower;
   std::vector<PoleChoice> chosen =
       choose_poles(*dt, n, local_spacing ? &nearest : nullptr, sampling_estimate, &lfs_lower);
+  std::vector<char> bad_inner;  // per sample: its second pole is nearer than the lfs bound
   if (!lfs_lower.empty()) {
-    out.bad_inner.resize(n);
+    bad_inner.resize(n);
     parallel_indices(n, [&](std::size_t i) {
-      out.bad_inner[i] = CGAL::squared_distance(chosen[i].centres[1], samples[i]) < CGAL::square(lfs_lower[i]);
+      bad_inner[i] = CGAL::squared_distance(chosen[i].centres[1], samples[i]) < CGAL::square(lfs_lower[i]);
     });
   }
   if (local_spacing) out.local_spacing = median_neighbour_spacing(*dt, nearest);
@@ -385,7 +386,7 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
     }
     out.sample_poles[i] = {choice_pole[2 * j], choice_pole[2 * j + 1],
                            opposite_weight(samples[i], chosen[i].centres[0], chosen[i].centres[1])};
-    if (!out.bad_inner.empty() && out.bad_inner[i]) out.sample_poles[i].is_paired = false;
+    if (!bad_inner.empty() && bad_inner[i]) out.sample_poles[i].is_paired = false;
   }
   chosen = {};
   const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());

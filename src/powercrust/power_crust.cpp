@@ -52,14 +52,14 @@ std::vector<bool> small_poles(const PowerCrustResult& result, const std::vector<
   return skip;
 }
 
-// Poles that only bad choices made (PowerCrustOptions::sampling_estimate): a bad second pole,
-// and with drop_both the first pole of its sample, unless another sample keeps the pole.
-std::vector<bool> bad_poles(const PowerCrustResult& result, const std::vector<char>& bad_inner, bool drop_both) {
-  if (bad_inner.empty()) return {};
+// Poles that only bad choices made (PowerCrustOptions::sampling_estimate; the samples left
+// unpaired): a bad second pole, and with drop_both the first pole of its sample, unless
+// another sample keeps the pole.
+std::vector<bool> bad_poles(const PowerCrustResult& result, bool drop_both) {
   std::vector<bool> kept(result.poles.size(), false);
-  for (std::size_t i = 0; i < result.samples.size(); ++i) {
-    if (!(bad_inner[i] && drop_both)) kept[result.sample_poles[i].outer] = true;
-    if (!bad_inner[i]) kept[result.sample_poles[i].inner] = true;
+  for (const SamplePoles& sp : result.sample_poles) {
+    if (sp.is_paired || !drop_both) kept[sp.outer] = true;
+    if (sp.is_paired) kept[sp.inner] = true;
   }
   kept.flip();
   return kept;
@@ -91,7 +91,6 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   };
   StageClock clock(progress);
   std::vector<double> local_spacing;
-  std::vector<char> bad_inner;
   {
     clock.begin("delaunay");
     std::unique_ptr<Delaunay> dt = build_delaunay(result.samples, result.bounding_points,
@@ -106,7 +105,6 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     result.sample_poles = std::move(poles.sample_poles);
     result.delaunay_cells = std::move(poles.cells);
     local_spacing = std::move(poles.local_spacing);
-    bad_inner = std::move(poles.bad_inner);
     stats.delaunay_cells = poles.finite_cells;
     stats.welded_poles = poles.welded_poles;
     stats.poles = result.poles.size();
@@ -118,8 +116,10 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   std::vector<bool> skip = small_poles(result, local_spacing, options.min_pole_radius_rel_spacing);
   stats.filtered_poles = static_cast<std::size_t>(std::count(skip.begin(), skip.end(), true));
   std::vector<bool> deferred;
-  if (const std::vector<bool> bad = bad_poles(result, bad_inner, options.drop_both_bad_poles); !bad.empty()) {
-    stats.bad_second_poles = static_cast<std::size_t>(std::count(bad_inner.begin(), bad_inner.end(), 1));
+  if (thresholds.sampling_estimate < 1.0) {
+    const std::vector<bool> bad = bad_poles(result, options.drop_both_bad_poles);
+    stats.bad_second_poles = static_cast<std::size_t>(std::count_if(
+        result.sample_poles.begin(), result.sample_poles.end(), [](const SamplePoles& sp) { return !sp.is_paired; }));
     skip.resize(result.poles.size(), false);
     for (std::size_t p = 0; p < bad.size(); ++p) {
       stats.bad_poles_left_out += bad[p] && !skip[p];
@@ -127,8 +127,8 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     }
     if (options.defer_bad_first_poles && !options.drop_both_bad_poles) {
       deferred.assign(result.poles.size(), false);
-      for (std::size_t i = 0; i < bad_inner.size(); ++i)
-        if (bad_inner[i]) deferred[result.sample_poles[i].outer] = true;
+      for (const SamplePoles& sp : result.sample_poles)
+        if (!sp.is_paired) deferred[sp.outer] = true;
       stats.deferred_poles = static_cast<std::size_t>(std::count(deferred.begin(), deferred.end(), true));
     }
   }

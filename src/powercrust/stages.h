@@ -39,15 +39,14 @@ struct PoleStage {
   std::vector<double> local_spacing;
   std::size_t finite_cells = 0;
   std::size_t welded_poles = 0;
-  /// Per sample, with sampling_estimate < 1: 1 when its second pole is nearer than the lfs
-  /// bound (PowerCrustOptions::sampling_estimate); empty otherwise.
-  std::vector<char> bad_inner;
 };
 
 /// Compute Voronoi vertices, poles (welded where balls agree to ~1e-11 diag, ids in the
 /// samples' spatial order) and the opposite-pole weights. Frees the triangulation as soon as
 /// the poles are chosen. With `local_spacing`, also each sample's local spacing (the median
-/// nearest-neighbour distance over it and its Delaunay neighbours).
+/// nearest-neighbour distance over it and its Delaunay neighbours). With sampling_estimate < 1,
+/// a sample whose second pole is nearer than the lfs bound is left unpaired
+/// (SamplePoles::is_paired false).
 PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>& samples, bool keep_cells,
                         bool local_spacing, double sampling_estimate = 1.0);
 
