@@ -102,7 +102,7 @@ ManifoldRepairStats make_manifold(TaggedMesh& tagged, int max_rounds = 4);
 /// What cut_to_orientable did.
 struct OrientableCutStats {
   std::size_t seams = 0;        ///< connected seams of orientation-reversing edges cut
-  std::size_t twists_kept = 0;  ///< seams left: no reversing loop shorter than max_twist_loop
+  std::size_t twists_kept = 0;  ///< seams left: on a bordered piece, no reversing loop shorter than max_twist_loop
   std::size_t faces_removed = 0;
   bool still_non_orientable = false;  ///< seams to cut were left after max_rounds
 };
@@ -112,7 +112,8 @@ struct OrientableCutStats {
 /// remain. Only the seams crossed by an orientation-reversing loop (a closed path between
 /// face centroids along which the winding comes back reversed) shorter than `max_twist_loop`
 /// are cut: a cross-cap where the sheet crossed itself is a few rho across, a twist of the
-/// surface itself (a Moebius strip) runs around it. Infinity cuts every seam. Leaves the mesh
+/// surface itself (a Moebius strip) runs around it. Seams on a piece without border are cut
+/// too: a closed surface in space is orientable. Infinity cuts every seam. Leaves the mesh
 /// wound as consistently as it can be (orient_faces).
 OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius,
                                      double max_twist_loop = std::numeric_limits<double>::infinity(),

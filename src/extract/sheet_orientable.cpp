@@ -120,9 +120,22 @@ bool has_short_reversing_loop(ReversingLoops& loops, const topology::MeshGraph& 
   return false;
 }
 
+// Per face: whether its piece (faces joined through edges) has a border edge. A closed
+// piece cannot be non-orientable and embedded in space, so a seam on it is always a defect.
+std::vector<char> piece_has_border(const topology::MeshGraph& g) {
+  std::vector<std::uint32_t> piece;
+  const std::uint32_t pieces = topology::face_components(g, piece);
+  std::vector<char> bordered(pieces, 0);
+  for (std::size_t e = 0; e < g.edges.size(); ++e)
+    if (g.face_count_of_edge(e) == 1) bordered[piece[g.edge_faces[g.edge_face_begin[e]]]] = 1;
+  std::vector<char> has_border(piece.size());
+  for (std::size_t f = 0; f < piece.size(); ++f) has_border[f] = bordered[piece[f]];
+  return has_border;
+}
+
 // The vertices of the seams to cut: every seam, or (with a finite `max_twist_loop`) those
-// crossed by a reversing loop shorter than it, defects of the sheet; the others are twists of
-// the surface itself. Counts both.
+// crossed by a reversing loop shorter than it or lying on a closed piece, defects of the
+// sheet; the others are twists of the surface itself (a Moebius strip's). Counts both.
 struct SeamChoice {
   std::vector<Index> cut_vertices;
   std::size_t cut = 0, kept = 0;
@@ -133,9 +146,11 @@ SeamChoice choose_seams(const TriangleMesh& mesh, const topology::MeshGraph& g, 
   const std::vector<std::size_t> seams = seam_edges(mesh, g);
   if (seams.empty()) return choice;
   std::optional<ReversingLoops> loops;
-  if (std::isfinite(max_twist_loop)) loops.emplace(mesh, g, seams);
+  std::vector<char> has_border;
+  if (std::isfinite(max_twist_loop)) loops.emplace(mesh, g, seams), has_border = piece_has_border(g);
   for (const std::vector<std::size_t>& seam : group_seams(g, seams, mesh.vertices.size())) {
-    if (loops && !has_short_reversing_loop(*loops, g, seam, max_twist_loop)) {
+    const bool on_closed_piece = loops && !has_border[g.edge_faces[g.edge_face_begin[seam.front()]]];
+    if (loops && !on_closed_piece && !has_short_reversing_loop(*loops, g, seam, max_twist_loop)) {
       ++choice.kept;
       continue;
     }

@@ -1,7 +1,8 @@
 // cut_to_orientable with a bound on the reversing loops: a small cross-cap glued into a plane
 // (the kind of defect a sheet gets where it crosses itself) is cut, while the twist of a long
 // Moebius strip, reversed only by loops around the whole strip, is kept; without a bound both
-// are cut.
+// are cut. A twist on a closed piece (the strip capped with a disc) is always cut: a closed
+// surface in space is orientable.
 #include "envcrust/topology.h"
 
 #include "sheet_mesh.h"
@@ -77,6 +78,21 @@ TaggedMesh plane_with_a_cross_cap() {
   return t;
 }
 
+// The Moebius strip's border (one loop, 128 vertices) joined by a fan to an apex 10 above
+// it: a projective plane (closed, non-orientable; the fan crosses the strip, which the
+// combinatorics does not see). Loops through the apex are over 20 long, so the shortest
+// reversing loops still run around the strip.
+TaggedMesh capped_moebius_strip() {
+  TaggedMesh t = moebius_strip();
+  const auto loops = topology::boundary_loops(t.mesh);
+  const auto apex = static_cast<Index>(t.mesh.vertices.size());
+  t.mesh.vertices.emplace_back(0.0, 0.0, 10.0);
+  const std::vector<Index>& rim = loops.front().vertices;
+  for (std::size_t k = 0; k < rim.size(); ++k) t.mesh.triangles.push_back({rim[k], rim[(k + 1) % rim.size()], apex});
+  t.face_dot.assign(t.mesh.triangles.size(), -1.0);
+  return t;
+}
+
 }  // namespace
 
 TEST(CutToOrientable, the_test_meshes_are_what_they_claim) {
@@ -90,6 +106,24 @@ TEST(CutToOrientable, the_test_meshes_are_what_they_claim) {
   EXPECT_FALSE(capped.is_orientable);
   EXPECT_EQ(capped.euler_characteristic, 0);  // a disc (1) with a cross-cap (-1)
   EXPECT_EQ(capped.boundary_loops.size(), 1u);
+  const auto projective_plane = topology::analyze_topology(capped_moebius_strip().mesh);
+  EXPECT_TRUE(projective_plane.is_manifold());
+  EXPECT_FALSE(projective_plane.is_orientable);
+  EXPECT_EQ(projective_plane.euler_characteristic, 1);
+  EXPECT_TRUE(projective_plane.boundary_loops.empty());
+}
+
+TEST(CutToOrientable, cuts_a_twist_on_a_closed_piece_whatever_the_loop_bound) {
+  TaggedMesh t = capped_moebius_strip();
+  const OrientableCutStats stats = cut_to_orientable(t, 0.15, 6.0);
+  EXPECT_EQ(stats.seams, 1u);
+  EXPECT_EQ(stats.twists_kept, 0u);
+  EXPECT_GT(stats.faces_removed, 0u);
+  EXPECT_FALSE(stats.still_non_orientable);
+  const auto after = topology::analyze_topology(t.mesh);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_TRUE(after.is_orientable);
+  EXPECT_FALSE(after.boundary_loops.empty());
 }
 
 TEST(CutToOrientable, cuts_a_small_cross_cap_under_the_loop_bound) {
