@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <string>
 
 namespace envcrust::cli {
 
@@ -21,11 +22,15 @@ void add_common_flags(CLI::App& command, CommonFlags& flags) {
 Progress terminal_progress(bool quiet) {
   Progress progress;
   if (quiet || isatty(STDERR_FILENO) == 0) return progress;
-  auto last = std::make_shared<int>(-1);
+  struct Shown {
+    std::string stage;
+    int percent = -1;
+  };
+  auto last = std::make_shared<Shown>();
   progress.callback = [last](std::string_view stage, double fraction) {
     const int percent = static_cast<int>(fraction * 100.0 + 0.5);
-    if (percent == *last) return;
-    *last = percent;
+    if (percent == last->percent && stage == last->stage) return;
+    *last = {std::string(stage), percent};
     const int width = 30;
     const int filled = percent * width / 100;
     std::fprintf(stderr, "\r%-24.*s [%.*s%*s] %3d%%", static_cast<int>(stage.size()), stage.data(),

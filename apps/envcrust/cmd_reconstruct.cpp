@@ -273,9 +273,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   if (cmd.use_remesh) cmd.options.remesh = cmd.remesh;
-  const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
-  choose_input_options(cmd, loaded);
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
+  const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
+  choose_input_options(cmd, loaded);
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
   const auto& retry = result.adaptive_retry;
@@ -460,10 +460,13 @@ void run_envelope(ReconstructCommand& cmd) {
   check_outputs(cmd, io::OutputKind::Points);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
-  const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling);
+  const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
+  const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
   cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);  // the envelope's settings
   if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
+  progress.report("envelope", 0.0);
   const auto env = envelope::sample_envelope(loaded.samples, cmd.options.envelope);
+  progress.report("envelope", 1.0);
   PointSet points;
   for (const auto& s : env.samples) {
     points.points.push_back(s.position);

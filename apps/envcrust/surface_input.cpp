@@ -114,7 +114,7 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
 
 }  // namespace
 
-LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling) {
+LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress) {
   LoadedSurface out;
   if (!sampling.boundary_files.empty() && is_builtin_spec(spec))
     throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
@@ -149,12 +149,15 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     load_mesh_samples(std::move(*mesh), spec, out);
     return out;
   }
+  // A point file's steps before the envelope take seconds on a million points.
+  progress.report("input: reading", 0.0);
   PointSet points = usable_points(io::read_points(spec), spec, out.notes);
   out.source = "points";
   out.kind.is_builtin = false;
   if (points.has_normals()) {
     out.notes.push_back("normal lines from the file");
   } else {
+    progress.report("input: normals", 0.3);
     normals::NormalOptions o;
     points.normals = normals::estimate_normal_lines(points.points, o);
     out.kind.are_normals_estimated = true;
@@ -179,6 +182,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
       out.samples.boundary = std::move(curves.curves);
       for (auto& w : curves.warnings) out.notes.push_back(std::move(w));
     } else if (sampling.detect_boundary) {
+      progress.report("input: boundary", 0.6);
       auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, sampling.boundary);
       out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                           std::to_string(detection.dropped_loops) + " short loops dropped)");
@@ -190,6 +194,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   } catch (const DegenerateInput& e) {
     throw DegenerateInput(spec + ": " + e.what());
   }
+  progress.report("input", 1.0);
   return out;
 }
 

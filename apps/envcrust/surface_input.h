@@ -42,6 +42,6 @@ struct LoadedSurface {
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
 };
 
-LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling);
+LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress = {});
 
 }  // namespace envcrust::cli

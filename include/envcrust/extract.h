@@ -3,6 +3,7 @@
 #pragma once
 
 #include "envcrust/envelope.h"
+#include "envcrust/progress.h"
 #include "envcrust/types.h"
 
 #include <limits>
@@ -153,9 +154,10 @@ struct SheetResult {
 /// edges resolved, pinched vertices split, outer pieces and crumbs dropped, small holes
 /// filled) and projected onto the surface samples. Works for non-orientable M.
 /// @param surface the samples of M the envelope was built from (for distances/projection)
+/// @param progress told each step as it begins ("sheet: projection", ...), with the share done
 /// @throws DegenerateInput when the envelope has fewer than 5 samples or is flat.
 SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                           const envelope::SurfaceSamples& surface,
-                          const SheetOptions& options = {});
+                          const SheetOptions& options = {}, const Progress& progress = {});
 
 }  // namespace envcrust::extract

@@ -95,11 +95,15 @@ std::vector<double> component_distances(const envelope::EnvelopeSamples& envelop
 }  // namespace
 
 SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
-                          const envelope::SurfaceSamples& surface, const SheetOptions& options) {
+                          const envelope::SurfaceSamples& surface, const SheetOptions& options,
+                          const Progress& progress) {
   validate(options);
   SheetResult result;
   auto& seconds = result.stats.seconds;
   Stopwatch clock;
+  // Each step is announced with the share of the stage done before it (the steps' shares of
+  // the bunny's extraction time).
+  progress.report("sheet: Voronoi polygons", 0.0);
   const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg);
   result.stats.delaunay_edges = raw.delaunay_edges;
   result.stats.crossing_edges = raw.crossing_edges;
@@ -107,6 +111,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
 
   TaggedMesh sheet = triangulate_sheet(raw);
   seconds.voronoi = clock.lap();
+  progress.report("sheet: cleaning", 0.14);
   // One kd-tree of the surface samples for every step below.
   const NearestIndex samples(surface.points);
   // Distances that scale with rho use the local rho of the nearest sample (adaptive rho),
@@ -134,6 +139,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   }
   compact_vertices(sheet);
   seconds.cleaning = clock.lap();
+  progress.report("sheet: projection", 0.24);
   if (options.use_projection) {
     const bool is_noisy = envelope.noise > options.noisy_rel_rho * envelope.rho;
     const auto moved = project_onto_samples(
@@ -158,6 +164,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.projections_refused = moved.refused + snapped.refused;
   }
   seconds.projection = clock.lap();
+  progress.report("sheet: manifold check", 0.42);
   // Every step above can leave a defect that the next ones do not see (moves put vertices on
   // one point, a fan over a loop through a pinched vertex), so the result is checked as the
   // analyzer reads it, and repaired.
@@ -171,6 +178,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.warnings.push_back(std::to_string(repair.faces_dropped) +
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
   seconds.manifold_check = clock.lap();
+  progress.report("sheet: orientation cut", 0.44);
   // After a cut: the removed bands or balls leave crumbs between them (dropped) and
   // pinholes where a band or ball barely touched the sheet (fanned, as every hole below the
   // envelope's resolution is); with fill_cut_holes every hole away from the boundary curves
@@ -227,6 +235,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     }
   }
   seconds.orientable_cut = clock.lap();
+  progress.report("sheet: handle cut", 0.66);
   if (options.cut_handles_rel_rho > 0) {
     const HandleCutStats cut = cut_local_handles(sheet, options.cut_handles_rel_rho * envelope.rho);
     result.stats.handle_balls = cut.balls;

@@ -100,7 +100,7 @@ ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, cons
   if (options.extraction == Extraction::Sheet) {
     progress.report("medial sheet", 0.0);
     clock.lap();
-    auto sheet = extract::extract_sheet(out.envelope, samples, options.sheet);
+    auto sheet = extract::extract_sheet(out.envelope, samples, options.sheet, progress);
     out.seconds.extraction = clock.lap();
     out.mesh = std::move(sheet.mesh);
     out.sheet_stats = sheet.stats;

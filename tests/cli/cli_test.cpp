@@ -797,3 +797,28 @@ TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "envcrust: error: " + path("fin.off") + ": edge (0, 1) has 3 faces: the mesh is not a surface\n");
 }
+
+// On a terminal (util-linux `script` gives the command one) the long stages draw a bar with
+// the step under way: the point file's reading, normals and boundary detection, the envelope
+// and each step of the sheet; not when stderr is a file, nor with --quiet.
+TEST_F(CliTest, progress_names_each_step_on_a_terminal_only) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 3000 -o " + path("c.xyz")).exit_code, 0);
+  const std::string command = std::string(ENVCRUST_BINARY) + " reconstruct " + path("c.xyz") + " -o " +
+                              path("c.ply") + " --no-analysis";
+  auto on_terminal = [&](const std::string& extra) {
+    const std::string typescript = path("typescript.txt");
+    const std::string shell = "script -qec '" + command + extra + "' /dev/null > " + typescript + " 2>&1";
+    if (std::system(shell.c_str()) != 0) return std::string("script failed");
+    return envcrust::testing::slurp(typescript);
+  };
+  if (std::system("command -v script > /dev/null") != 0) GTEST_SKIP() << "no util-linux script";
+  const std::string shown = on_terminal("");
+  for (const std::string step : {"input: normals", "input: boundary", "envelope", "sheet: Voronoi polygons",
+                                 "sheet: cleaning", "sheet: projection", "sheet: handle cut", "medial sheet"})
+    EXPECT_NE(shown.find(step), std::string::npos) << step << " in:\n" << shown;
+  EXPECT_NE(shown.find("100%"), std::string::npos) << shown;
+  EXPECT_EQ(on_terminal(" --quiet").find('%'), std::string::npos);
+  const auto piped = run_envcrust("reconstruct " + path("c.xyz") + " -o " + path("c.ply") + " --no-analysis");
+  EXPECT_EQ(piped.exit_code, 0);
+  EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
+}

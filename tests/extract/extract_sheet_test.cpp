@@ -13,6 +13,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace envcrust;
 
@@ -297,4 +300,27 @@ TEST(SheetCutToOrientable, refuses_a_non_positive_band) {
   } catch (const InvalidOptions& e) {
     EXPECT_STREQ(e.what(), "SheetOptions::orientable_cut_rel_rho out of range (got 0)");
   }
+}
+
+// The progress callback hears every step, in order, as it begins, with the share of the
+// stage done before it rising from 0.
+TEST(SheetProgress, announces_each_step_in_order) {
+  const auto samples = exact_samples(*surfaces::make_builtin("cylinder"), 5000);
+  const auto env = envelope::sample_envelope(samples);
+  std::vector<std::pair<std::string, double>> heard;
+  Progress progress;
+  progress.callback = [&](std::string_view stage, double fraction) { heard.emplace_back(stage, fraction); };
+  const auto sheet = extract::extract_sheet(env, samples, {}, progress);
+  EXPECT_FALSE(sheet.mesh.triangles.empty());
+  const std::vector<std::string> steps = {"sheet: Voronoi polygons", "sheet: cleaning",      "sheet: projection",
+                                          "sheet: manifold check",   "sheet: orientation cut", "sheet: handle cut"};
+  ASSERT_EQ(heard.size(), steps.size());
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    EXPECT_EQ(heard[k].first, steps[k]);
+    if (k > 0) {
+      EXPECT_GT(heard[k].second, heard[k - 1].second);
+    }
+    EXPECT_LT(heard[k].second, 1.0);
+  }
+  EXPECT_EQ(heard.front().second, 0.0);
 }
