@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "inputs.h"
 
+#include "envcrust/distance.h"
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
 #include "envcrust/render.h"
@@ -43,6 +44,8 @@ struct RenderCommand {
   float ball_opacity = 0.3f;
   std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   int font_px = render::Font{}.pixel_height;
+  std::string error_reference;       ///< colour meshes by the distance of their vertices to it
+  std::optional<double> error_max;   ///< the distance drawn red; unset: the largest of all panels
   render::RenderOptions options;
   CommonFlags common;
 };
@@ -141,6 +144,46 @@ PanelScene panel_scene(const RenderCommand& cmd, const std::string& spec) {
   return panel;
 }
 
+// The distance of every vertex of each panel's meshes to the reference (a mesh, builtin:NAME's
+// exact tessellation, or a point file), as colours from blue (0) to red (the scale's top:
+// --error-max, or the largest distance over all panels); each panel's report gets its largest
+// and mean distance. Returns the top of the scale.
+double colour_by_error(const RenderCommand& cmd, std::vector<PanelScene>& panels) {
+  const analysis::Reference reference = load_reference(cmd.error_reference);
+  std::vector<std::vector<std::vector<double>>> distances(panels.size());
+  double largest = 0.0;
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    double max = 0.0, sum = 0.0;
+    std::size_t count = 0;
+    for (const auto& layer : panels[p].scene.meshes) {
+      const auto& vertices = layer.mesh.vertices;
+      distances[p].push_back(reference.mesh ? distance::distances_to_mesh(vertices, *reference.mesh)
+                                            : distance::distances_to_points(vertices, reference.points));
+      for (const double d : distances[p].back()) max = std::max(max, d), sum += d, ++count;
+    }
+    if (count > 0)
+      panels[p].summary["error"] = {{"max", max}, {"mean", sum / static_cast<double>(count)}, {"vertices", count}};
+    largest = std::max(largest, max);
+  }
+  const double top = cmd.error_max.value_or(largest);
+  for (std::size_t p = 0; p < panels.size(); ++p)
+    for (std::size_t m = 0; m < panels[p].scene.meshes.size(); ++m) {
+      auto& layer = panels[p].scene.meshes[m];
+      const auto& d = distances[p][m];
+      if (d.size() != layer.mesh.vertices.size()) continue;  // no triangle to measure against: plain colours
+      layer.vertex_colors.resize(d.size());
+      for (std::size_t v = 0; v < d.size(); ++v) layer.vertex_colors[v] = render::heat_color(top > 0 ? d[v] / top : 0.0);
+    }
+  return top;
+}
+
+std::string short_number(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
+  return out.str();
+}
+
 std::optional<render::Font> load_font(const RenderCommand& cmd, std::vector<std::string>& warnings) {
   if (!std::filesystem::exists(cmd.font)) {
     warnings.push_back("font " + cmd.font + " not found: captions and title left out");
@@ -161,6 +204,7 @@ void run_render(RenderCommand& cmd) {
     throw UsageError("--balls: at most one per input (" + std::to_string(cmd.inputs.size()) + "), got " +
                      std::to_string(cmd.balls.size()));
   if (!cmd.grid.empty() && cmd.grid.size() != 2) throw UsageError("--grid: expected ROWS COLUMNS");
+  if (cmd.error_max && cmd.error_reference.empty()) throw UsageError("--error-max needs --error-to");
   if (!cmd.grid.empty() && (cmd.grid[0] < 1 || cmd.grid[1] < 1 ||
                             static_cast<std::size_t>(cmd.grid[0]) * static_cast<std::size_t>(cmd.grid[1]) < cmd.inputs.size()))
     throw UsageError("--grid " + std::to_string(cmd.grid[0]) + " " + std::to_string(cmd.grid[1]) + ": room for " +
@@ -168,12 +212,23 @@ void run_render(RenderCommand& cmd) {
                      std::to_string(cmd.inputs.size()) + " inputs");
 
   std::vector<std::string> warnings;
+  std::vector<PanelScene> scenes;
+  for (std::size_t i = 0; i < cmd.inputs.size(); ++i) {
+    scenes.push_back(panel_scene(cmd, cmd.inputs[i]));
+    if (i < cmd.balls.size()) add_balls(cmd, cmd.balls[i], scenes.back());
+  }
+  std::optional<double> error_top;
+  if (!cmd.error_reference.empty()) {
+    error_top = colour_by_error(cmd, scenes);
+    if (cmd.title.empty())
+      cmd.title = "distance to " + default_caption(cmd.error_reference) + ": blue 0, red " + short_number(*error_top) +
+                  " or more";
+  }
   std::vector<render::Panel> panels;
   nlohmann::json panel_reports = nlohmann::json::array();
   for (std::size_t i = 0; i < cmd.inputs.size(); ++i) {
     const auto panel_start = std::chrono::steady_clock::now();
-    PanelScene panel = panel_scene(cmd, cmd.inputs[i]);
-    if (i < cmd.balls.size()) add_balls(cmd, cmd.balls[i], panel);
+    PanelScene& panel = scenes[i];
     render::Image image;
     try {
       image = render::render_scene(panel.scene, cmd.options);
@@ -207,14 +262,22 @@ void run_render(RenderCommand& cmd) {
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cmd.common.json) {
-    print_json({{"output", cmd.output}, {"width", picture.width}, {"height", picture.height},
-                {"panels", panel_reports}, {"seconds", seconds}, {"warnings", warnings}});
+    nlohmann::json report = {{"output", cmd.output}, {"width", picture.width}, {"height", picture.height},
+                              {"panels", panel_reports}, {"seconds", seconds}, {"warnings", warnings}};
+    if (error_top) report["error_scale"] = {{"reference", cmd.error_reference}, {"red_at", *error_top}};
+    print_json(report);
     return;
   }
   for (const auto& w : warnings) std::cerr << "envcrust: warning: " << w << "\n";
   if (cmd.common.quiet) return;
   std::cout << "rendered " << panels.size() << (panels.size() == 1 ? " panel" : " panels") << " to " << cmd.output
             << " (" << picture.width << " x " << picture.height << " pixels) in " << seconds << " s\n";
+  if (!error_top) return;
+  std::cout << "  distance to " << cmd.error_reference << " (red at " << *error_top << "):\n";
+  for (const auto& panel : panel_reports)
+    if (panel.contains("error"))
+      std::cout << "    " << panel["input"].get<std::string>() << ": largest " << panel["error"]["max"].get<double>()
+                << ", mean " << panel["error"]["mean"].get<double>() << "\n";
 }
 
 }  // namespace
@@ -259,6 +322,12 @@ void register_render(CLI::App& app) {
   sub->add_option("--font", cmd->font, "TrueType font for captions (missing: captions left out, with a warning)")
       ->capture_default_str();
   sub->add_option("--font-size", cmd->font_px, "Caption height in pixels")->capture_default_str();
+  sub->add_option("--error-to", cmd->error_reference,
+                  "Colour the meshes by the distance of each vertex to this reference (a mesh, builtin:NAME's exact "
+                  "surface, or a point file): blue 0 to red at --error-max; the title gives the scale");
+  sub->add_option("--error-max", cmd->error_max,
+                  "With --error-to: the distance drawn red (default: the largest over all panels)")
+      ->check(number_above(0));
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_render(*cmd); });
 }

@@ -33,6 +33,14 @@ struct DistanceOptions {
   std::uint64_t seed = 1;        ///< seed of the area sampling
 };
 
+/// Distance of each point to the nearest point of the mesh's non-degenerate triangles (AABB
+/// tree, parallel), in the order of `points`; empty when there is no such triangle or point.
+std::vector<double> distances_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh);
+
+/// Distance of each point to the nearest reference point (kd-tree, parallel), in the order of
+/// `points`; empty when either set is empty.
+std::vector<double> distances_to_points(const std::vector<Point3>& points, const std::vector<Point3>& reference);
+
 /// Distance of each point to the nearest point of the triangles (AABB tree, parallel).
 DirectedDistance points_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh);
 

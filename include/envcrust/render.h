@@ -29,7 +29,15 @@ struct MeshLayer {
   Color back{0.85f, 0.45f, 0.35f};
   Shading shading = Shading::Smooth;
   bool use_wireframe = false;  ///< darken pixels near triangle edges
+  /// One colour per vertex, interpolated across each triangle, instead of `front`/`back` (a
+  /// value map, e.g. the error against a reference through heat_color); back faces get it
+  /// at 70% brightness, so an open surface still reads as open. Empty: front and back.
+  std::vector<Color> vertex_colors{};
 };
+
+/// A colour scale for values: t = 0 blue, then cyan, green, yellow, t = 1 red (t clamped to
+/// [0, 1]; NaN reads 0).
+Color heat_color(double t);
 
 /// Spheres: points of a cloud (one radius for all) or polar balls (one radius each).
 struct SphereLayer {

@@ -39,7 +39,7 @@ DirectedDistance summarize(const std::vector<Point3>& points, const std::vector<
 
 }  // namespace
 
-DirectedDistance points_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh) {
+std::vector<double> distances_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh) {
   std::vector<Triangle> triangles;
   triangles.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
@@ -55,11 +55,10 @@ DirectedDistance points_to_mesh(const std::vector<Point3>& points, const Triangl
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
                         d[i] = std::sqrt(tree.squared_distance(points[i]));
                     });
-  return summarize(points, d);
+  return d;
 }
 
-DirectedDistance points_to_points(const std::vector<Point3>& points,
-                                  const std::vector<Point3>& reference) {
+std::vector<double> distances_to_points(const std::vector<Point3>& points, const std::vector<Point3>& reference) {
   if (points.empty() || reference.empty()) return {};
   NeighborSearch::Tree tree(reference.begin(), reference.end());
   tree.build();
@@ -71,7 +70,18 @@ DirectedDistance points_to_points(const std::vector<Point3>& points,
                         d[i] = std::sqrt(search.begin()->second);
                       }
                     });
-  return summarize(points, d);
+  return d;
+}
+
+DirectedDistance points_to_mesh(const std::vector<Point3>& points, const TriangleMesh& mesh) {
+  const std::vector<double> d = distances_to_mesh(points, mesh);
+  return d.empty() ? DirectedDistance{} : summarize(points, d);
+}
+
+DirectedDistance points_to_points(const std::vector<Point3>& points,
+                                  const std::vector<Point3>& reference) {
+  const std::vector<double> d = distances_to_points(points, reference);
+  return d.empty() ? DirectedDistance{} : summarize(points, d);
 }
 
 DirectedDistance curves_to_points(const std::vector<Polyline>& curves, const std::vector<Point3>& points,

@@ -1,37 +1,17 @@
 // Figure 8: the non-C2 cap y = |x|^(3/2): where the envelope's artifacts appear. The envelope
 // stops being C^{1,1} where a principal radius (2/3) sqrt(r) falls below rho, i.e. within
-// r < 2.25 rho^2 of the apex (METHOD.md §1); the error is measured per distance to the apex.
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-
+// r < 2.25 rho^2 of the apex (METHOD.md §1); the error is measured per distance to the apex,
+// and the close-ups are coloured by it.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "envcrust/distance.h"
 #include "experiment_list.h"
 #include "trial.h"
 
 namespace envcrust::experiments::detail {
 namespace {
-
-using Triangle3 = Kernel::Triangle_3;
-using TriangleIterator = std::vector<Triangle3>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-// Distance of every vertex of `mesh` to the triangles of `truth`.
-std::vector<double> vertex_errors(const TriangleMesh& mesh, const TriangleMesh& truth) {
-  std::vector<Triangle3> triangles;
-  for (const auto& t : truth.triangles)
-    triangles.emplace_back(truth.vertices[t[0]], truth.vertices[t[1]], truth.vertices[t[2]]);
-  Tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
-  std::vector<double> errors;
-  errors.reserve(mesh.vertices.size());
-  for (const auto& p : mesh.vertices) errors.push_back(std::sqrt(tree.squared_distance(p)));
-  return errors;
-}
 
 std::string bin_label(double lo, double hi) {
   char buffer[64];
@@ -74,7 +54,8 @@ ExperimentResult run_cusp(const ExperimentOptions& options) {
       "to the apex";
   profile.columns = {"ρ"};
   for (std::size_t b = 0; b + 1 < edges.size(); ++b) profile.columns.push_back(bin_label(edges[b], edges[b + 1]));
-  Figure figure{"fig8_cusp", "Cusp apex close-ups (d < 0.3) at increasing ρ; horn for comparison", 0, {}};
+  Figure figure{"fig8_cusp", "", 0, {}};
+  std::vector<std::vector<double>> panel_errors;  // per cusp panel, per vertex
 
   for (std::size_t i = 0; i < rhos.size(); ++i) {
     step(options, "cusp", static_cast<double>(i) / (rhos.size() + 1));
@@ -82,7 +63,7 @@ ExperimentResult run_cusp(const ExperimentOptions& options) {
     ro.envelope.rho = rhos[i];
     const Trial trial = run_trial(samples, ro, cusp.reference, cusp.expected);
     const auto& mesh = trial.result.mesh;
-    const auto errors = vertex_errors(mesh, *cusp.reference.mesh);
+    const auto errors = distance::distances_to_mesh(mesh.vertices, *cusp.reference.mesh);
     std::vector<double> bin_max(edges.size() - 1, -1.0);
     double near_max = 0, far_max = 0, artifact_radius = 0;
     // An artifact is a vertex farther from M than twice the sheet error bound rho/64 (F4).
@@ -103,10 +84,24 @@ ExperimentResult run_cusp(const ExperimentOptions& options) {
     std::vector<Cell> row = {rhos[i]};
     for (double m : bin_max) row.push_back(m < 0 ? Cell{} : Cell{m});
     profile.add_row(std::move(row));
-    if (options.use_figures)
+    if (options.use_figures && !is_empty) {
       figure.panels.push_back(mesh_panel("ρ " + format_cell(rhos[i]) + ": " + outcome_caption(trial.report),
-                                         near_apex(mesh, 0.3), render::View{0.0, 20.0}, false));
+                                         near_apex(mesh, 0.3), render::View{-60.0, -35.0}, false));
+      panel_errors.push_back(errors);
+    }
   }
+  // One colour scale for every close-up: red at the largest vertex error of them all.
+  double red_at = 0;
+  for (const auto& errors : panel_errors)
+    for (const double e : errors) red_at = std::max(red_at, e);
+  for (std::size_t p = 0; p < panel_errors.size(); ++p) {
+    auto& colors = figure.panels[p].scene.meshes.front().vertex_colors;
+    for (const double e : panel_errors[p]) colors.push_back(render::heat_color(red_at > 0 ? e / red_at : 0.0));
+  }
+  char scale[160];
+  std::snprintf(scale, sizeof scale, "coloured by distance to the exact surface (blue 0, red %.2g%% of the diagonal)",
+                100.0 * red_at / cusp.diagonal);
+  figure.title = "Cusp apex close-ups (d < 0.3) at increasing ρ, " + std::string(scale) + "; horn for comparison";
   out.notes.push_back(
       "d: distance of a vertex of the result from the apex; ρ/32 is twice the sheet error bound "
       "of METHOD.md F4, so an error beyond it is an artifact");

@@ -70,6 +70,10 @@ void check_scene(const Scene& scene) {
         }
       }
     }
+    const auto& colors = scene.meshes[m].vertex_colors;
+    if (!colors.empty() && colors.size() != mesh.vertices.size())
+      throw InvalidInput("render: " + what + " has " + std::to_string(colors.size()) + " vertex colours for " +
+                         std::to_string(mesh.vertices.size()) + " vertices");
     items += mesh.triangles.size();
   }
   for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
@@ -180,6 +184,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     mesh.back = layer.back;
     mesh.shading = layer.shading;
     mesh.use_wireframe = layer.use_wireframe;
+    mesh.vertex_colors = layer.vertex_colors;
     if (mesh.shading == Shading::Smooth) mesh.vertex_normals = signed_vertex_normals(mesh);
     out.meshes.push_back(std::move(mesh));
   }

@@ -19,6 +19,7 @@ struct PreparedMesh {
   Color front, back;
   Shading shading = Shading::Smooth;
   bool use_wireframe = false;
+  std::vector<Color> vertex_colors;  ///< one per vertex, or empty
 };
 
 struct PreparedSpheres {

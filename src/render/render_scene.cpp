@@ -30,6 +30,8 @@ constexpr int kMaxLayers = 16;
 constexpr double kMinTransmission = 1.0 / 512.0;
 // Pixels closer than this many pixel widths to a triangle edge are darkened (wireframe).
 constexpr double kWireHalfWidthPx = 0.6;
+// Back faces of a mesh drawn with vertex colours: the value colour at this brightness.
+constexpr double kBackFaceValueShade = 0.7;
 
 void check_options(const RenderOptions& o) {
   auto fail = [](const std::string& field, const std::string& range, double value) {
@@ -61,7 +63,10 @@ class Tracer {
       : scene_(scene), embree_(embree), camera_(camera),
         lights_(detail::make_lights(camera.right, camera.up, camera.forward)),
         background_(detail::to_linear(options.background)) {
-    for (const auto& m : scene.meshes) mesh_colors_.push_back({detail::to_linear(m.front), detail::to_linear(m.back)});
+    for (const auto& m : scene.meshes) {
+      mesh_colors_.push_back({detail::to_linear(m.front), detail::to_linear(m.back), {}});
+      for (const auto& c : m.vertex_colors) mesh_colors_.back().per_vertex.push_back(detail::to_linear(c));
+    }
     for (const auto& s : scene.spheres) sphere_colors_.push_back(detail::to_linear(s.color));
     for (const auto& c : scene.curves) {
       curve_colors_.emplace_back();
@@ -131,7 +136,13 @@ class Tracer {
       }
       if (length(sum) > 1e-12) normal = sum;
     }
-    Rgb base = is_front ? mesh_colors_[hit.layer].front : mesh_colors_[hit.layer].back;
+    const MeshColors& colors = mesh_colors_[hit.layer];
+    Rgb base = is_front ? colors.front : colors.back;
+    if (!colors.per_vertex.empty()) {
+      base = {};
+      for (int k = 0; k < 3; ++k) base = base + weights[k] * colors.per_vertex[tri[k]];
+      if (!is_front) base = kBackFaceValueShade * base;
+    }
     if (mesh.use_wireframe && near_edge(a, b, c, winding, weights)) base = 0.3 * base;
     return {base, facing_viewer(normal), 1.0};
   }
@@ -149,6 +160,7 @@ class Tracer {
 
   struct MeshColors {
     Rgb front, back;
+    std::vector<Rgb> per_vertex;  ///< linear light; empty: front and back
   };
   const detail::PreparedScene& scene_;
   const detail::EmbreeScene& embree_;

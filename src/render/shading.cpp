@@ -49,3 +49,20 @@ Rgb shade(Rgb base, Vec3 normal, const Lights& lights) {
 }
 
 }  // namespace envcrust::render::detail
+
+namespace envcrust::render {
+
+Color heat_color(double t) {
+  // Blue, cyan, green, yellow, red at t = 0, 1/4, 1/2, 3/4, 1, linear between (in sRGB).
+  static constexpr Color kStops[] = {{0.15f, 0.30f, 0.90f}, {0.10f, 0.75f, 0.85f}, {0.20f, 0.75f, 0.25f},
+                                     {0.95f, 0.85f, 0.15f}, {0.85f, 0.15f, 0.10f}};
+  t = std::isnan(t) ? 0.0 : std::clamp(t, 0.0, 1.0);
+  const double at = t * 4.0;
+  const auto k = std::min<std::size_t>(3, static_cast<std::size_t>(at));
+  const auto f = static_cast<float>(at - static_cast<double>(k));
+  const Color& a = kStops[k];
+  const Color& b = kStops[k + 1];
+  return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b)};
+}
+
+}  // namespace envcrust::render

@@ -134,3 +134,37 @@ TEST_F(CliTest, render_bad_size_and_view_are_usage_errors) {
 }
 
 }  // namespace
+
+// --error-to colours a mesh by the distance of its vertices to a reference: the sphere's
+// tessellation scaled by 1.1 lies 0.1 (plus the chords' sag) outside the original, so
+// every vertex is at the top of the scale and the picture is red; the original against the
+// scaled one, with red at 1, is blue. The report gives each panel's largest and mean error.
+TEST_F(CliTest, render_error_to_colours_a_mesh_by_its_distance_to_a_reference) {
+  ASSERT_EQ(run_envcrust("sample sphere --mesh -o " + path("s.ply")).exit_code, 0);
+  envcrust::TriangleMesh larger = envcrust::io::read_triangle_mesh(path("s.ply"));
+  for (auto& p : larger.vertices) p = envcrust::Point3(1.1 * p.x(), 1.1 * p.y(), 1.1 * p.z());
+  envcrust::io::write_mesh(path("s11.off"), larger);
+
+  const auto r = run_envcrust("render " + path("s11.off") + " --error-to " + path("s.ply") +
+                              " --view front --size 96x96 --json -o " + path("e.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& error = j["panels"][0]["error"];
+  EXPECT_NEAR(error["max"].get<double>(), 0.1, 0.01);
+  EXPECT_NEAR(error["mean"].get<double>(), 0.1, 0.01);
+  EXPECT_EQ(j["error_scale"]["red_at"].get<double>(), error["max"].get<double>());
+  const auto red = envcrust::io::read_png(path("e.png"));
+  EXPECT_GT(dominant_pixels(red, 0), 96 * 96 / 4);
+  EXPECT_EQ(dominant_pixels(red, 2), 0);
+
+  const auto b = run_envcrust("render " + path("s.ply") + " --error-to " + path("s11.off") +
+                              " --error-max 1 --view front --size 96x96 -q -o " + path("b.png"));
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto blue = envcrust::io::read_png(path("b.png"));
+  EXPECT_GT(dominant_pixels(blue, 2), 96 * 96 / 4);
+  EXPECT_EQ(dominant_pixels(blue, 0), 0);
+
+  const auto bad = run_envcrust("render " + path("s.ply") + " --error-max 1 -o " + path("x.png"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err, "envcrust: usage error: --error-max needs --error-to\n");
+}

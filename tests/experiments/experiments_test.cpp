@@ -63,8 +63,23 @@ TEST(Experiments, paraboloid_envelope_has_one_boundary_loop_and_the_direct_crust
 
 TEST(Experiments, cusp_reports_the_error_profile_per_radius_and_the_smooth_horn) {
   SCOPED_TRACE("seed 1");
-  const auto r = run_experiment("cusp", quick());
+  const auto r = run_experiment("cusp", quick(true));
   ASSERT_EQ(r.tables.size(), 2u);
+  // The close-ups are coloured by each vertex's distance to the exact surface, on one scale:
+  // some vertex of them is at its red end (heat_color(1)); the horn is plain.
+  ASSERT_EQ(r.figures.size(), 1u);
+  const auto& panels = r.figures[0].panels;
+  ASSERT_EQ(panels.size(), 3u);
+  bool has_red = false;
+  for (std::size_t p = 0; p < 2; ++p) {
+    const auto& layer = panels[p].scene.meshes.at(0);
+    ASSERT_EQ(layer.vertex_colors.size(), layer.mesh.vertices.size());
+    for (const auto& c : layer.vertex_colors)
+      has_red = has_red || (c.r == render::heat_color(1).r && c.g == render::heat_color(1).g);
+  }
+  EXPECT_TRUE(has_red);
+  EXPECT_TRUE(panels[2].scene.meshes.at(0).vertex_colors.empty());
+  EXPECT_NE(r.figures[0].title.find("coloured by distance to the exact surface"), std::string::npos);
   const auto& summary = r.tables[0];
   ASSERT_EQ(summary.rows.size(), 3u);  // rho 0.07, 0.1, and the horn
   EXPECT_EQ(summary.rows[2][summary.column("surface")], Cell{std::string("horn")});

@@ -190,3 +190,48 @@ TEST(RenderScene, options_out_of_range_are_refused_with_the_field_named) {
 
 }  // namespace
 }  // namespace envcrust::render
+
+namespace envcrust::render {
+namespace {
+
+// Vertex colours replace the front and back colours: a sphere whose vertices are all at the
+// red end of the heat scale is drawn red, at the blue end blue; the scale runs blue, green,
+// red and clamps outside [0, 1].
+TEST(RenderScene, vertex_colours_paint_the_mesh) {
+  auto painted = [](double t) {
+    Scene scene;
+    scene.meshes.push_back({unit_sphere()});
+    scene.meshes[0].vertex_colors.assign(scene.meshes[0].mesh.vertices.size(), heat_color(t));
+    return render_scene(scene, small_options(64, 64, View::front()));
+  };
+  const auto* red = testing::pixel(painted(1.0), 32, 32);
+  EXPECT_GT(red[0], red[1] + 60);
+  EXPECT_GT(red[0], red[2] + 60);
+  const auto* blue = testing::pixel(painted(0.0), 32, 32);
+  EXPECT_GT(blue[2], blue[0] + 60);
+  EXPECT_GT(blue[2], blue[1] + 30);
+
+  const Color green = heat_color(0.5);
+  EXPECT_GT(green.g, green.r);
+  EXPECT_GT(green.g, green.b);
+  for (const auto& [outside, end] : {std::pair{-1.0, 0.0}, std::pair{7.0, 1.0}}) {
+    EXPECT_EQ(heat_color(outside).r, heat_color(end).r);
+    EXPECT_EQ(heat_color(outside).b, heat_color(end).b);
+  }
+}
+
+TEST(RenderScene, vertex_colours_must_match_the_vertices) {
+  Scene scene;
+  scene.meshes.push_back({unit_sphere()});
+  scene.meshes[0].vertex_colors = {heat_color(0), heat_color(1)};
+  try {
+    (void)render_scene(scene, small_options(32, 32, View::front()));
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "render: mesh 0 has 2 vertex colours for " +
+                                         std::to_string(scene.meshes[0].mesh.vertices.size()) + " vertices");
+  }
+}
+
+}  // namespace
+}  // namespace envcrust::render
