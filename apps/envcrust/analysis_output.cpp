@@ -51,6 +51,13 @@ nlohmann::json analysis_json(const analysis::AnalysisReport& r) {
   j["euler_characteristic"] = t.euler_characteristic;
   j["is_orientable"] = t.is_orientable;
   j["boundary_loops"] = t.boundary_loops.size();
+  if (r.self_intersections) {
+    const auto& s = *r.self_intersections;
+    nlohmann::json examples = nlohmann::json::array();
+    for (const auto& p : s.examples) examples.push_back({p.x(), p.y(), p.z()});
+    j["self_intersections"] = {{"face_pairs", s.face_pairs}, {"faces", s.faces}, {"examples", examples}};
+    j["is_embedded"] = t.is_manifold() && s.face_pairs == 0;
+  }
   nlohmann::json comps = nlohmann::json::array();
   for (const auto& c : t.components) {
     nlohmann::json cj = {{"vertices", c.vertices}, {"edges", c.edges}, {"faces", c.faces},
@@ -108,6 +115,15 @@ void print_analysis(std::ostream& out, const std::string& name, const analysis::
       << t.degenerate_faces << " degenerate faces, " << t.duplicate_faces << " duplicate faces\n";
   out << "  Euler characteristic " << t.euler_characteristic << ", orientable: " << yes_no(t.is_orientable)
       << ", boundary loops: " << t.boundary_loops.size() << "\n";
+  if (r.self_intersections) {
+    const auto& s = *r.self_intersections;
+    out << "  self-intersections: ";
+    if (s.face_pairs == 0)
+      out << "none" << (t.is_manifold() ? " (an embedded surface)" : "") << "\n";
+    else
+      out << s.face_pairs << " pairs of faces pass through each other (" << s.faces << " faces), e.g. near ("
+          << s.examples.front().x() << ", " << s.examples.front().y() << ", " << s.examples.front().z() << ")\n";
+  }
   if (t.misoriented_edges > 0)
     out << "  faces not oriented alike: " << t.misoriented_edges << " edges that both their faces run the same way\n";
   if (t.welded_vertices > 0)

@@ -8,6 +8,7 @@
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
 
+#include <cstdint>
 #include <iostream>
 #include <memory>
 
@@ -95,6 +96,8 @@ void register_analyze(CLI::App& app) {
       ->capture_default_str()
       ->check(whole_number_at_least(1));
   sub->add_flag("--no-knots", cmd->no_knots, "Skip knot types and linking numbers of boundary loops");
+  sub->add_flag("--no-self-intersections", [cmd](std::int64_t) { cmd->options.use_self_intersections = false; },
+                "Skip the search for faces that pass through each other (a few seconds per million faces)");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_analyze(*cmd); });
 }

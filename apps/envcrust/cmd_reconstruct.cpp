@@ -345,6 +345,11 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"handle_balls", s.handle_balls},
                   {"faces_removed_at_handles", s.faces_removed_at_handles},
                   {"cut_holes_filled", s.cut_holes_filled},
+                  {"self_intersections_found", s.self_intersections_found},
+                  {"self_intersections_smoothed", s.self_intersections_smoothed},
+                  {"faces_removed_at_self_intersections", s.faces_removed_at_self_intersections},
+                  {"self_intersections_cut", s.self_intersections_cut},
+                  {"self_intersection_cut_rel_rho", cmd.options.sheet.self_intersection_cut_rel_rho},
                   {"cut_to_orientable", cmd.options.sheet.cut_to_orientable},
                   {"orientable_max_twist_loop_rel_rho",
                    std::isinf(cmd.options.sheet.orientable_max_twist_loop_rel_rho)
@@ -354,7 +359,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"seconds",
                    {{"voronoi", s.seconds.voronoi}, {"cleaning", s.seconds.cleaning},
                     {"projection", s.seconds.projection}, {"manifold_check", s.seconds.manifold_check},
-                    {"orientable_cut", s.seconds.orientable_cut}, {"handle_cut", s.seconds.handle_cut}}}};
+                    {"orientable_cut", s.seconds.orientable_cut}, {"handle_cut", s.seconds.handle_cut},
+                    {"self_intersection_cut", s.seconds.self_intersection_cut}}}};
   }
   if (result.remesh_stats) {
     const auto& s = *result.remesh_stats;
@@ -526,6 +532,11 @@ void register_reconstruct(CLI::App& app) {
   sub->add_flag("--keep-cut-holes", [cmd](std::int64_t) { cmd->options.sheet.fill_cut_holes = false; },
                 "With --orientable or --cut-handles: leave the holes the cuts make open instead of closing them "
                 "(those along a boundary curve are never closed)");
+  sub->add_option("--self-intersection-cut", cmd->options.sheet.self_intersection_cut_rel_rho,
+                  "Where the result passes through itself, relax the vertices there; where that is not enough, "
+                  "remove the faces within this radius (in rho) and close the holes with discs (reported; 0: off)")
+      ->capture_default_str()
+      ->check(number_above(0, true));
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
   sub->add_flag("--remesh", cmd->use_remesh,

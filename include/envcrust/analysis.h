@@ -4,6 +4,7 @@
 
 #include "envcrust/distance.h"
 #include "envcrust/knots.h"
+#include "envcrust/mesh.h"
 #include "envcrust/topology.h"
 #include "envcrust/types.h"
 
@@ -49,6 +50,7 @@ struct AnalyzeOptions {
   std::size_t max_knot_loops = 64;    ///< skip knot analysis beyond this many loops (warn)
   knots::KnotOptions knot;            ///< projection seed and vote count
   distance::DistanceOptions distance; ///< sampling of the distance measurement
+  bool use_self_intersections = true; ///< look for faces that pass through each other
 };
 
 /// The full report.
@@ -58,6 +60,9 @@ struct AnalysisReport {
   std::vector<LinkingReport> linking;  ///< every pair of loops, a < b
   std::optional<distance::DistanceReport> distance;
   std::vector<BoundaryMatch> boundary_matches;  ///< one per reference boundary loop
+  /// Faces passing through each other (unset when not looked for): a 2-manifold without
+  /// them is an embedded surface.
+  std::optional<mesh::SelfIntersections> self_intersections;
   std::vector<std::string> warnings;
 };
 

@@ -102,6 +102,11 @@ struct SheetOptions {
   /// use_fill_away_from_boundary) with a smooth disc (refined and faired triangulation of the
   /// hole), so a handle or cross-cap becomes a cap instead of a hole. False keeps the holes.
   bool fill_cut_holes = true;
+  /// Last: where faces pass through each other (folds that noise or a tight rim leave), relax
+  /// the vertices there (smooth_self_intersections); where that is not enough, remove the
+  /// faces within this radius (in rho, along the mesh) of them and close the holes away from
+  /// the boundary curves with discs (once; the discs are not checked again). 0: off. >= 0.
+  double self_intersection_cut_rel_rho = 0.5;
 };
 
 /// What extract_sheet did.
@@ -133,12 +138,20 @@ struct SheetStats {
   std::size_t faces_removed_at_handles = 0;
   /// SheetOptions::fill_cut_holes: holes left by the cuts closed with a disc.
   std::size_t cut_holes_filled = 0;
+  /// SheetOptions::self_intersection_cut_rel_rho: intersecting face pairs found, those that
+  /// relaxing the vertices opened, those left to the cut, and the faces it removed.
+  std::size_t self_intersections_found = 0;
+  std::size_t self_intersections_smoothed = 0;
+  std::size_t self_intersections_cut = 0;
+  std::size_t faces_removed_at_self_intersections = 0;
   /// Wall-clock seconds per step: the Delaunay triangulation of the envelope samples and
   /// the Voronoi polygons; cleaning (far faces, components, manifold repairs, small holes);
   /// projection onto the samples, trimming and the border snap; the final manifold check;
-  /// the orientation cut and the handle cut, each with the hole closing after it.
+  /// the orientation cut, the handle cut and the self-intersection cut, each with the hole
+  /// closing after it.
   struct Seconds {
-    double voronoi = 0, cleaning = 0, projection = 0, manifold_check = 0, orientable_cut = 0, handle_cut = 0;
+    double voronoi = 0, cleaning = 0, projection = 0, manifold_check = 0, orientable_cut = 0, handle_cut = 0,
+           self_intersection_cut = 0;
   } seconds;
 };
 

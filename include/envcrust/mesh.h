@@ -41,6 +41,23 @@ TriangleMesh triangulate_polygons(const PolygonMesh& mesh);
 /// triangle uses. Triangle indices are remapped; triangle order is kept.
 TriangleMesh weld_identical_vertices(const TriangleMesh& mesh);
 
+/// Where a triangle mesh passes through itself: face pairs that meet other than along the
+/// vertices and the edge they share (coincident vertices count as shared). A 2-manifold
+/// mesh without them is an embedded surface.
+struct SelfIntersections {
+  std::size_t face_pairs = 0;     ///< intersecting pairs
+  std::size_t faces = 0;          ///< faces in at least one pair
+  std::vector<Index> face_list;   ///< those faces' indices in the input mesh, ascending
+  std::vector<Point3> examples;   ///< centroids of a face of some pairs (sorted; at most max_examples)
+};
+
+/// Find the self-intersections (candidates by bounding boxes, in parallel; exact predicates).
+/// Degenerate faces, faces with a repeated vertex and repeated faces are left out. With
+/// `only_faces` (one flag per face), only the pairs with a flagged face are looked for: a
+/// re-check after a local change.
+SelfIntersections self_intersections(const TriangleMesh& mesh, std::size_t max_examples = 8,
+                                     const std::vector<char>* only_faces = nullptr);
+
 /// Per face, 1 when it has a repeated vertex index or the same vertex set as an earlier face
 /// (whatever the winding): what remove_duplicate_faces drops.
 std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <sstream>
 
 namespace envcrust::analysis {
 namespace {
@@ -137,6 +138,16 @@ AnalysisReport analyze_mesh(const TriangleMesh& mesh, topology::MeshTopology top
   if (t.duplicate_faces > 0)
     report.warnings.push_back(std::to_string(t.duplicate_faces) + " duplicate faces");
   analyze_loops(report, options);
+  if (options.use_self_intersections) {
+    report.self_intersections = mesh::self_intersections(mesh);
+    if (const auto& s = *report.self_intersections; s.face_pairs > 0) {
+      std::ostringstream w;
+      w << s.face_pairs << " pairs of faces pass through each other (" << s.faces << " faces), e.g. near ("
+        << s.examples.front().x() << ", " << s.examples.front().y() << ", " << s.examples.front().z()
+        << "): the mesh is not embedded";
+      report.warnings.push_back(w.str());
+    }
+  }
   if (reference.mesh) {
     report.distance = distance::compare_to_mesh(mesh, *reference.mesh, options.distance);
   } else if (!reference.points.empty()) {

@@ -80,7 +80,7 @@ ExperimentResult run_density(const ExperimentOptions& options) {
       if (surfaces::make_builtin(name)->expected_topology().boundary_loops > 0) names.push_back(name);
   }
   const std::vector<std::size_t> ladder = options.use_quick_sizes
-                                              ? std::vector<std::size_t>{2000, 250, 80}
+                                              ? std::vector<std::size_t>{2000, 250, 80, 30}
                                               : std::vector<std::size_t>{5000, 2500, 1250, 625, 312, 156};
   const int seeds = options.use_quick_sizes ? 1 : 3;
   Table table;

@@ -6,6 +6,7 @@
 #include "sheet_projection.h"
 #include "voronoi_sheet.h"
 
+#include "envcrust/mesh.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/progress.h"
 #include "envcrust/topology.h"
@@ -43,6 +44,7 @@ void validate(const SheetOptions& o) {
   if (!(o.orientable_max_twist_loop_rel_rho > 0))
     fail("orientable_max_twist_loop_rel_rho", o.orientable_max_twist_loop_rel_rho);
   if (!(o.cut_handles_rel_rho >= 0)) fail("cut_handles_rel_rho", o.cut_handles_rel_rho);
+  if (!(o.self_intersection_cut_rel_rho >= 0)) fail("self_intersection_cut_rel_rho", o.self_intersection_cut_rel_rho);
 }
 
 // The envelope radius at surface sample i: its local rho (adaptive) or the one rho.
@@ -249,6 +251,49 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     }
   }
   seconds.handle_cut = clock.lap();
+  if (options.self_intersection_cut_rel_rho > 0) {
+    progress.report("sheet: self-intersections", 0.9);
+    // Relaxed first: most folds open without losing faces; what is left is cut out, checked
+    // again after the holes are closed (the discs can cross the sheet in turn).
+    mesh::SelfIntersections found = mesh::self_intersections(sheet.mesh, 0);
+    result.stats.self_intersections_found = found.face_pairs;
+    if (found.face_pairs > 0) {
+      const std::size_t first = found.face_pairs;
+      found = smooth_self_intersections(sheet.mesh, std::move(found), 3);
+      result.stats.self_intersections_smoothed = first - std::min(first, found.face_pairs);
+      result.stats.self_intersections_cut = found.face_pairs;
+      // One cut, not checked again here: each check of the whole sheet costs seconds per
+      // million faces, and the analysis of the result reports what is left.
+      // A sheet that crosses itself nearly everywhere (an input far too sparse for its size)
+      // is kept as it is rather than cut away: the report says so.
+      if (found.face_pairs > 0) {
+        const TaggedMesh before = sheet;
+        const SelfIntersectionCutStats cut =
+            cut_self_intersections(sheet, found, options.self_intersection_cut_rel_rho * envelope.rho);
+        tidy_after_cut();
+        if (4 * sheet.mesh.triangles.size() < 3 * before.mesh.triangles.size()) {
+          sheet = before;
+          result.stats.self_intersections_cut = 0;
+          result.warnings.push_back("the sheet passes through itself at " + std::to_string(found.face_pairs) +
+                                    " face pairs, too many to cut out (" + std::to_string(cut.faces_removed) + " of " +
+                                    std::to_string(before.mesh.triangles.size()) + " faces): left as it is");
+        } else {
+          result.stats.faces_removed_at_self_intersections = cut.faces_removed;
+        }
+      }
+    }
+    if (result.stats.self_intersections_found > 0) {
+      std::ostringstream w;
+      w << "the sheet passed through itself at " << result.stats.self_intersections_found
+        << " face pairs: relaxed there"
+        << (result.stats.self_intersections_cut > 0
+                ? ", then " + std::to_string(result.stats.faces_removed_at_self_intersections) + " faces removed around the " +
+                      std::to_string(result.stats.self_intersections_cut) + " pairs that was not enough for, and the holes closed"
+                : std::string());
+      result.warnings.push_back(w.str());
+    }
+  }
+  seconds.self_intersection_cut = clock.lap();
   result.mesh = std::move(sheet.mesh);
   // The Voronoi polygons come wound as their Delaunay edges happen to run.
   topology::orient_faces(result.mesh);

@@ -5,6 +5,7 @@
 
 #include "voronoi_sheet.h"
 
+#include "envcrust/mesh.h"
 #include "envcrust/nearest_index.h"
 
 #include <limits>
@@ -118,6 +119,24 @@ struct OrientableCutStats {
 OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius,
                                      double max_twist_loop = std::numeric_limits<double>::infinity(),
                                      int max_rounds = 3);
+
+/// Where faces pass through each other (`found`, mesh::self_intersections of `mesh`), relax the vertices of
+/// those faces and two rings around them (three umbrella steps; border vertices move along
+/// the border only); repeat up to `rounds` times while any pair is left. Returns the pairs
+/// left (each round re-checks only the faces that moved). The folds that noise or the border snap leave open this way without losing faces.
+mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::SelfIntersections found, int rounds);
+
+/// What cut_self_intersections did.
+struct SelfIntersectionCutStats {
+  std::size_t pairs = 0;          ///< face pairs passing through each other, found first
+  std::size_t faces_removed = 0;
+};
+
+/// Remove the faces that pass through another face (`found`, mesh::self_intersections of the
+/// mesh) and every face with a vertex within `radius` (along mesh edges) of theirs, then
+/// repair the manifold. The holes are left to the caller.
+SelfIntersectionCutStats cut_self_intersections(TaggedMesh& tagged, const mesh::SelfIntersections& found,
+                                                double radius);
 
 /// What cut_local_handles did.
 struct HandleCutStats {

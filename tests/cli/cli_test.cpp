@@ -822,3 +822,30 @@ TEST_F(CliTest, progress_names_each_step_on_a_terminal_only) {
   EXPECT_EQ(piped.exit_code, 0);
   EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
 }
+
+// The analyzer says whether a mesh passes through itself: a tessellated sphere is an
+// embedded surface, two triangles piercing each other are not (one pair, and a warning).
+TEST_F(CliTest, analyze_reports_faces_that_pass_through_each_other) {
+  ASSERT_EQ(run_envcrust("sample sphere --mesh -o " + path("s.ply")).exit_code, 0);
+  const auto sphere = run_envcrust("analyze " + path("s.ply"));
+  EXPECT_NE(sphere.out.find("\n  self-intersections: none (an embedded surface)\n"), std::string::npos) << sphere.out;
+  {
+    std::ofstream off(path("x.off"));
+    off << "OFF\n6 2 0\n0 0 0\n2 0 0\n0 2 0\n0.5 0.5 -1\n0.5 0.5 1\n3 3 0.5\n3 0 1 2\n3 3 4 5\n";
+  }
+  const auto j = run_envcrust_json("analyze " + path("x.off") + " --json");
+  EXPECT_EQ(j["self_intersections"]["face_pairs"], 1);
+  EXPECT_EQ(j["self_intersections"]["faces"], 2);
+  EXPECT_EQ(j["self_intersections"]["examples"].size(), 1u);
+  EXPECT_EQ(j["is_embedded"], false);
+  ASSERT_EQ(j["warnings"].size(), 1u);
+  EXPECT_EQ(j["warnings"][0].get<std::string>().rfind("1 pairs of faces pass through each other (2 faces), e.g. near (", 0), 0u);
+  const auto skipped = run_envcrust_json("analyze " + path("x.off") + " --no-self-intersections --json");
+  EXPECT_FALSE(skipped.contains("self_intersections"));
+  EXPECT_FALSE(skipped.contains("is_embedded"));
+  EXPECT_TRUE(skipped["warnings"].empty());
+  const auto text = run_envcrust("analyze " + path("x.off"));
+  EXPECT_NE(text.out.find("\n  self-intersections: 1 pairs of faces pass through each other (2 faces), e.g. near ("),
+            std::string::npos)
+      << text.out;
+}

@@ -90,24 +90,24 @@ TEST_F(CliTest, issue_5_bunny_with_adaptive_rho_is_one_genus_0_piece) {
 }
 
 // The lion head as a mesh (a disc whose density varies 20x): the automatic uniform rho,
-// raised to bridge its sparse parts, gives genus 8; the input mesh says genus 0, so the
-// reconstruction runs again with adaptive rho and keeps that run, a disc (measured 4.2% and
-// 5.7% of the diagonal: ears and mouth are cut and closed as handles).
-TEST_F(CliTest, issue_5_lion_head_mesh_retries_with_adaptive_rho_and_is_a_disc) {
+// raised to bridge its sparse parts, gave genus 3-8 and the run was repeated with adaptive
+// rho. Since the sheet's self-intersections are repaired (30,386 face pairs: most relaxed,
+// the rest cut out with the handles they sat on and closed), the uniform run is already the
+// input's disc, so it is kept without a retry (measured 4.8% and 5.3% of the diagonal: ears
+// and mouth cut and closed; 2,150 crossing pairs are left, which the report counts).
+TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "cgal_lion_head";
   if (!std::filesystem::exists(folder / "lion-head.off")) GTEST_SKIP() << "no " << folder;
   const std::string mesh = (folder / "lion-head.off").string();
   const auto j = run_envcrust_json("reconstruct " + mesh + " -o " + path("lion.ply") + " --reference " + mesh + " --json");
   EXPECT_EQ(j["input_genus"], 0);
-  const auto& retry = j["adaptive_retry"];
-  EXPECT_EQ(retry["max_genus"], 0);
-  EXPECT_GT(retry["uniform"]["genus"].get<long>(), 0);
-  EXPECT_EQ(retry["adaptive"]["genus"], 0);
-  EXPECT_LT(retry["adaptive"]["defects"].get<long>(), retry["uniform"]["defects"].get<long>());
-  EXPECT_EQ(retry["kept"], "adaptive");
+  EXPECT_FALSE(j.contains("adaptive_retry"));
+  EXPECT_GT(j["sheet"]["self_intersections_found"].get<long>(), 1000);
+  EXPECT_GT(j["sheet"]["self_intersections_smoothed"].get<long>(), j["sheet"]["self_intersections_cut"].get<long>());
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 1, 1);
-  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.05);
+  EXPECT_LT(a["self_intersections"]["face_pairs"].get<long>(), j["sheet"]["self_intersections_found"].get<long>() / 10);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.06);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.07);
 }
 

@@ -66,6 +66,8 @@ TEST_P(SheetOfBuiltin, has_the_surface_topology_and_stays_close) {
   for (const auto& m : report.boundary_matches)
     std::printf("   boundary %zu: %.3f%%\n", m.reference_loop, 100 * report.distance->relative(m.hausdorff));
   EXPECT_TRUE(t.is_manifold());
+  ASSERT_TRUE(report.self_intersections.has_value());
+  EXPECT_EQ(report.self_intersections->face_pairs, 0u);  // an embedded surface
   EXPECT_EQ(t.components.size(), 1u);
   EXPECT_EQ(t.euler_characteristic, expected.euler_characteristic);
   EXPECT_EQ(static_cast<int>(t.boundary_loops.size()), expected.boundary_loops);
@@ -185,6 +187,8 @@ TEST_P(SheetOfNoisyBuiltin, issue_5_stays_within_half_a_percent_of_the_surface) 
               100 * mesh_to_truth, 100 * truth_to_mesh, sheet.stats.vertices_projected,
               sheet.stats.projections_refused);
   EXPECT_TRUE(t.is_manifold());
+  ASSERT_TRUE(report.self_intersections.has_value());
+  EXPECT_EQ(report.self_intersections->face_pairs, 0u);  // an embedded surface
   EXPECT_EQ(t.components.size(), 1u);
   EXPECT_EQ(t.euler_characteristic, expected.euler_characteristic);
   EXPECT_EQ(static_cast<int>(t.boundary_loops.size()), expected.boundary_loops);
@@ -313,7 +317,8 @@ TEST(SheetProgress, announces_each_step_in_order) {
   const auto sheet = extract::extract_sheet(env, samples, {}, progress);
   EXPECT_FALSE(sheet.mesh.triangles.empty());
   const std::vector<std::string> steps = {"sheet: Voronoi polygons", "sheet: cleaning",      "sheet: projection",
-                                          "sheet: manifold check",   "sheet: orientation cut", "sheet: handle cut"};
+                                          "sheet: manifold check",   "sheet: orientation cut", "sheet: handle cut",
+                                          "sheet: self-intersections"};
   ASSERT_EQ(heard.size(), steps.size());
   for (std::size_t k = 0; k < steps.size(); ++k) {
     EXPECT_EQ(heard[k].first, steps[k]);

@@ -1,0 +1,84 @@
+// Cut out the places where the sheet passes through itself
+// (SheetOptions::self_intersection_cut_rel_rho).
+#include "sheet_geodesic.h"
+#include "sheet_mesh.h"
+
+#include "envcrust/mesh.h"
+#include "envcrust/mesh_graph.h"
+
+#include <algorithm>
+
+namespace envcrust::extract {
+
+mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::SelfIntersections found, int rounds) {
+  constexpr int kRings = 2;       // the region: the faces' vertices and two rings around them
+  constexpr int kIterations = 3;  // umbrella steps per round
+  for (int round = 0;; ++round) {
+    if (found.face_pairs == 0 || round == rounds) return found;
+    const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
+    std::vector<std::vector<Index>> neighbours(mesh.vertices.size()), border(mesh.vertices.size());
+    for (std::size_t e = 0; e < g.edges.size(); ++e) {
+      const auto [a, b] = g.edges[e];
+      neighbours[a].push_back(b), neighbours[b].push_back(a);
+      if (g.face_count_of_edge(e) == 1) border[a].push_back(b), border[b].push_back(a);
+    }
+    std::vector<char> in_region(mesh.vertices.size(), 0);
+    std::vector<Index> region;
+    for (const Index f : found.face_list)
+      for (const Index v : mesh.triangles[f])
+        if (!in_region[v]) in_region[v] = 1, region.push_back(v);
+    for (int ring = 0; ring < kRings; ++ring) {
+      const std::size_t size = region.size();
+      for (std::size_t k = 0; k < size; ++k)
+        for (const Index w : neighbours[region[k]])
+          if (!in_region[w]) in_region[w] = 1, region.push_back(w);
+    }
+    // A border vertex moves along the border only (between its two border neighbours), an
+    // inner one to the average of its neighbours.
+    std::vector<Point3> moved(region.size());
+    for (int iteration = 0; iteration < kIterations; ++iteration) {
+      for (std::size_t k = 0; k < region.size(); ++k) {
+        const Index v = region[k];
+        const auto& around = border[v].empty() ? neighbours[v] : border[v];
+        if (around.empty() || (!border[v].empty() && border[v].size() != 2)) {
+          moved[k] = mesh.vertices[v];
+          continue;
+        }
+        double x = 0, y = 0, z = 0;
+        for (const Index w : around) x += mesh.vertices[w].x(), y += mesh.vertices[w].y(), z += mesh.vertices[w].z();
+        const auto n = static_cast<double>(around.size());
+        moved[k] = Point3(x / n, y / n, z / n);
+      }
+      for (std::size_t k = 0; k < region.size(); ++k) mesh.vertices[region[k]] = moved[k];
+    }
+    // Only the faces that moved can meet others now (every pair found had a face among them).
+    std::vector<char> moved_face(mesh.triangles.size(), 0);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (const Index v : mesh.triangles[f]) moved_face[f] |= in_region[v];
+    found = mesh::self_intersections(mesh, 0, &moved_face);
+  }
+}
+
+SelfIntersectionCutStats cut_self_intersections(TaggedMesh& tagged, const mesh::SelfIntersections& found,
+                                                double radius) {
+  SelfIntersectionCutStats stats;
+  stats.pairs = found.face_pairs;
+  if (found.face_pairs == 0) return stats;
+  const TriangleMesh& mesh = tagged.mesh;
+  std::vector<Index> sources;
+  for (const Index f : found.face_list)
+    for (const Index v : mesh.triangles[f]) sources.push_back(v);
+  const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
+  const MeshAdjacency adjacency = mesh_adjacency(mesh, g);
+  GeodesicBall ball(mesh.vertices.size());
+  ball.grow(adjacency, sources, radius);
+  std::vector<char> remove(mesh.triangles.size(), 0);
+  for (const Index f : found.face_list) remove[f] = 1;
+  for (const Index v : ball.reached())
+    for (std::size_t k = adjacency.face_begin[v]; k < adjacency.face_begin[v + 1]; ++k) remove[adjacency.faces[k]] = 1;
+  stats.faces_removed = remove_faces(tagged, remove);
+  make_manifold(tagged);
+  return stats;
+}
+
+}  // namespace envcrust::extract

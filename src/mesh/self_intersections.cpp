@@ -1,0 +1,119 @@
+// Self-intersections of a triangle mesh: face pairs that meet other than along the vertices
+// and the edge they share. Candidates are the pairs with overlapping bounding boxes (CGAL's
+// box intersection, in parallel); each is decided with exact predicates.
+#include "envcrust/errors.h"
+#include "envcrust/mesh.h"
+
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/centroid.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+
+namespace envcrust::mesh {
+namespace {
+
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t,
+                                                      CGAL::Box_intersection_d::ID_EXPLICIT>;
+using Face = std::array<Index, 3>;
+
+// Whether faces f and g (distinct vertex sets, neither degenerate) meet beyond what they share.
+bool faces_meet(const std::vector<Point3>& p, const Face& f, const Face& g) {
+  int in_g[3] = {-1, -1, -1};  // per corner of f: its corner in g, or -1
+  int shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (f[i] == g[j]) in_g[i] = j, ++shared;
+  if (shared == 0)
+    return CGAL::do_intersect(Kernel::Triangle_3(p[f[0]], p[f[1]], p[f[2]]),
+                              Kernel::Triangle_3(p[g[0]], p[g[1]], p[g[2]]));
+  auto free_corner = [](const Face& face, const auto& is_shared) {
+    for (int k = 0; k < 3; ++k)
+      if (!is_shared(k)) return face[k];
+    return face[0];
+  };
+  auto shared_in_f = [&](int k) { return in_g[k] >= 0; };
+  auto shared_in_g = [&](int k) { return std::find(std::begin(in_g), std::end(in_g), k) != std::end(in_g); };
+  if (shared == 2) {
+    // Along a shared edge (s, t), two triangles only overlap when they are coplanar and their
+    // free corners lie on the same side of the edge.
+    Index s = 0, t = 0;
+    bool first = true;
+    for (int i = 0; i < 3; ++i)
+      if (in_g[i] >= 0) (first ? s : t) = f[i], first = false;
+    const Point3& a = p[free_corner(f, shared_in_f)];
+    const Point3& b = p[free_corner(g, shared_in_g)];
+    return CGAL::orientation(p[s], p[t], a, b) == CGAL::COPLANAR &&
+           CGAL::coplanar_orientation(p[s], p[t], a, b) == CGAL::POSITIVE;
+  }
+  // One shared vertex: the planes' common line leaves each triangle through its opposite
+  // edge, so they meet beyond the vertex exactly when an opposite edge meets the other face.
+  Index fa = 0, fb = 0, ga = 0, gb = 0;
+  int n = 0;
+  for (int i = 0; i < 3; ++i)
+    if (in_g[i] < 0) (n++ == 0 ? fa : fb) = f[i];
+  n = 0;
+  for (int j = 0; j < 3; ++j)
+    if (!shared_in_g(j)) (n++ == 0 ? ga : gb) = g[j];
+  const Kernel::Triangle_3 tf(p[f[0]], p[f[1]], p[f[2]]), tg(p[g[0]], p[g[1]], p[g[2]]);
+  return CGAL::do_intersect(Kernel::Segment_3(p[fa], p[fb]), tg) ||
+         CGAL::do_intersect(Kernel::Segment_3(p[ga], p[gb]), tf);
+}
+
+}  // namespace
+
+SelfIntersections self_intersections(const TriangleMesh& input, std::size_t max_examples,
+                                     const std::vector<char>* only_faces) {
+  // Coincident vertices count as shared, as the analyzer welds them.
+  const TriangleMesh mesh = weld_identical_vertices(input);
+  const std::vector<char> skipped_face = repeated_or_degenerate_faces(mesh);
+  std::vector<Box> boxes;
+  boxes.reserve(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Face& t = mesh.triangles[f];
+    const Point3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    if (skipped_face[f] != 0 || CGAL::collinear(a, b, c)) continue;
+    boxes.emplace_back(a.bbox() + b.bbox() + c.bbox(), static_cast<std::uint32_t>(f));
+  }
+  std::atomic<std::size_t> pairs{0};
+  std::vector<char> involved(mesh.triangles.size(), 0);
+  std::mutex examples_mutex;
+  SelfIntersections out;
+  auto is_flagged = [&](std::uint32_t f) { return only_faces == nullptr || (*only_faces)[f] != 0; };
+  auto callback = [&](const Box& x, const Box& y) {
+    const std::uint32_t f = x.info(), g = y.info();
+    // Against all faces, a pair of two flagged faces comes twice, and a face meets itself.
+    if (only_faces != nullptr && (f == g || (is_flagged(g) && g < f))) return;
+    if (!faces_meet(mesh.vertices, mesh.triangles[f], mesh.triangles[g])) return;
+    ++pairs;
+    std::lock_guard lock(examples_mutex);
+    involved[f] = involved[g] = 1;
+    if (out.examples.size() < max_examples) {
+      const auto& t = mesh.triangles[f];
+      out.examples.push_back(CGAL::centroid(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
+    }
+  };
+  if (only_faces == nullptr) {
+    CGAL::box_self_intersection_d<CGAL::Parallel_tag>(boxes.begin(), boxes.end(), callback);
+  } else {
+    if (only_faces->size() != mesh.triangles.size())
+      throw InvalidInput("self_intersections: " + std::to_string(only_faces->size()) + " face flags for " +
+                         std::to_string(mesh.triangles.size()) + " faces");
+    std::vector<Box> flagged;
+    for (const Box& b : boxes)
+      if (is_flagged(b.info())) flagged.push_back(b);
+    CGAL::box_intersection_d<CGAL::Parallel_tag>(flagged.begin(), flagged.end(), boxes.begin(), boxes.end(), callback);
+  }
+  out.face_pairs = pairs.load();
+  for (std::size_t f = 0; f < involved.size(); ++f)
+    if (involved[f] != 0) out.face_list.push_back(static_cast<Index>(f));
+  out.faces = out.face_list.size();
+  // The parallel search finds the pairs in any order: the examples are sorted to be stable.
+  std::sort(out.examples.begin(), out.examples.end());
+  return out;
+}
+
+}  // namespace envcrust::mesh

@@ -1,0 +1,114 @@
+// self_intersections: faces that pass through each other are found, faces that only share
+// vertices or an edge are not, whatever the case (no shared vertex, one, two), and
+// coincident copies of a vertex count as one.
+#include "envcrust/errors.h"
+#include "envcrust/mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace envcrust;
+
+namespace {
+
+TriangleMesh two_triangles(std::array<Point3, 3> a, std::array<Point3, 3> b) {
+  TriangleMesh m;
+  for (const auto& p : a) m.vertices.push_back(p);
+  for (const auto& p : b) m.vertices.push_back(p);
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};  // no shared index: welding decides what is shared
+  return m;
+}
+
+// A closed octahedron-like sphere: 8 x 8 grid of latitude and longitude, poles shared.
+TriangleMesh uv_sphere(int rings, int segments) {
+  TriangleMesh m;
+  m.vertices.emplace_back(0, 0, 1);
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = std::numbers::pi * i / rings, phi = 2 * std::numbers::pi * j / segments;
+      m.vertices.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    }
+  m.vertices.emplace_back(0, 0, -1);
+  const auto south = static_cast<Index>(m.vertices.size() - 1);
+  auto at = [&](int i, int j) { return static_cast<Index>(1 + (i - 1) * segments + (j % segments)); };
+  for (int j = 0; j < segments; ++j) {
+    m.triangles.push_back({0, at(1, j), at(1, j + 1)});
+    m.triangles.push_back({south, at(rings - 1, j + 1), at(rings - 1, j)});
+    for (int i = 1; i + 1 < rings; ++i) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST(SelfIntersections, a_closed_sphere_has_none) {
+  const auto s = mesh::self_intersections(uv_sphere(12, 16));
+  EXPECT_EQ(s.face_pairs, 0u);
+  EXPECT_EQ(s.faces, 0u);
+  EXPECT_TRUE(s.examples.empty());
+}
+
+TEST(SelfIntersections, crossing_triangles_without_a_shared_vertex) {
+  const Point3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+  // Pierces the first through (0.5, 0.5, 0).
+  const auto crossing = mesh::self_intersections(two_triangles({a, b, c}, {Point3(0.5, 0.5, -1), Point3(0.5, 0.5, 1), Point3(3, 3, 0.5)}));
+  EXPECT_EQ(crossing.face_pairs, 1u);
+  EXPECT_EQ(crossing.faces, 2u);
+  ASSERT_EQ(crossing.examples.size(), 1u);
+  // Above it, apart.
+  EXPECT_EQ(mesh::self_intersections(two_triangles({a, b, c}, {Point3(0, 0, 1), Point3(2, 0, 1), Point3(0, 2, 1)})).face_pairs, 0u);
+}
+
+TEST(SelfIntersections, triangles_sharing_an_edge_meet_only_when_folded_flat_onto_each_other) {
+  const Point3 s(0, 0, 0), t(1, 0, 0);
+  // The same plane, the same side of the edge: they overlap.
+  EXPECT_EQ(mesh::self_intersections(two_triangles({s, t, Point3(0.5, 1, 0)}, {t, s, Point3(0.2, 0.5, 0)})).face_pairs, 1u);
+  // The same plane, opposite sides: a flat strip.
+  EXPECT_EQ(mesh::self_intersections(two_triangles({s, t, Point3(0.5, 1, 0)}, {t, s, Point3(0.5, -1, 0)})).face_pairs, 0u);
+  // A sharp fold, not flat: they meet only along the edge.
+  EXPECT_EQ(mesh::self_intersections(two_triangles({s, t, Point3(0.5, 1, 0)}, {t, s, Point3(0.5, 1, 0.001)})).face_pairs, 0u);
+}
+
+TEST(SelfIntersections, triangles_sharing_a_vertex_meet_when_one_passes_through_the_other) {
+  const Point3 s(0, 0, 0);
+  const std::array<Point3, 3> flat = {s, Point3(2, 0, 0), Point3(0, 2, 0)};
+  // From s down through the flat one's interior and out above it.
+  EXPECT_EQ(mesh::self_intersections(two_triangles(flat, {s, Point3(1, 0.5, -1), Point3(0.5, 1, 1)})).face_pairs, 1u);
+  // From s away from it: only the vertex is shared.
+  EXPECT_EQ(mesh::self_intersections(two_triangles(flat, {s, Point3(-1, 0, 1), Point3(0, -1, 1)})).face_pairs, 0u);
+  // The same plane, its sector inside the flat one's: it lies on it.
+  EXPECT_EQ(mesh::self_intersections(two_triangles(flat, {s, Point3(1, 0.2, 0), Point3(0.2, 1, 0)})).face_pairs, 1u);
+}
+
+TEST(SelfIntersections, degenerate_and_repeated_faces_are_left_out) {
+  TriangleMesh m = two_triangles({Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)},
+                                 {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)});  // the same face twice
+  EXPECT_EQ(mesh::self_intersections(m).face_pairs, 0u);
+  m.vertices.emplace_back(0.2, 0.2, -1);
+  m.vertices.emplace_back(0.2, 0.2, 1);
+  m.vertices.emplace_back(0.2, 0.2, 2);
+  m.triangles.push_back({6, 7, 8});  // collinear: a segment through the face, left out
+  EXPECT_EQ(mesh::self_intersections(m).face_pairs, 0u);
+}
+
+// With face flags only the pairs with a flagged face are looked for, each once.
+TEST(SelfIntersections, a_recheck_looks_at_the_flagged_faces_only) {
+  TriangleMesh m = two_triangles({Point3(0, 0, 0), Point3(2, 0, 0), Point3(0, 2, 0)},
+                                 {Point3(0.5, 0.5, -1), Point3(0.5, 0.5, 1), Point3(3, 3, 0.5)});
+  m.vertices.emplace_back(10, 10, 10);
+  m.vertices.emplace_back(11, 10, 10);
+  m.vertices.emplace_back(10, 11, 10);
+  m.triangles.push_back({6, 7, 8});  // far from both
+  EXPECT_EQ(mesh::self_intersections(m).face_pairs, 1u);
+  const std::vector<char> first = {1, 0, 0}, both = {1, 1, 0}, far = {0, 0, 1};
+  EXPECT_EQ(mesh::self_intersections(m, 8, &first).face_pairs, 1u);
+  EXPECT_EQ(mesh::self_intersections(m, 8, &both).face_pairs, 1u);
+  EXPECT_EQ(mesh::self_intersections(m, 8, &far).face_pairs, 0u);
+  const std::vector<char> wrong = {1, 0};
+  EXPECT_THROW((void)mesh::self_intersections(m, 8, &wrong), InvalidInput);
+}
