@@ -253,8 +253,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   seconds.handle_cut = clock.lap();
   if (options.self_intersection_cut_rel_rho > 0) {
     progress.report("sheet: self-intersections", 0.9);
-    // Relaxed first: most folds open without losing faces; what is left is cut out, checked
-    // again after the holes are closed (the discs can cross the sheet in turn).
+    // Relaxed first: most folds open without losing faces; what is left is cut out and the
+    // holes closed (the discs are not checked again: the analysis reports what is left).
     mesh::SelfIntersections found = mesh::self_intersections(sheet.mesh, 0);
     result.stats.self_intersections_found = found.face_pairs;
     if (found.face_pairs > 0) {
@@ -262,10 +262,9 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       found = smooth_self_intersections(sheet.mesh, std::move(found), 3);
       result.stats.self_intersections_smoothed = first - std::min(first, found.face_pairs);
       result.stats.self_intersections_cut = found.face_pairs;
-      // One cut, not checked again here: each check of the whole sheet costs seconds per
-      // million faces, and the analysis of the result reports what is left.
-      // A sheet that crosses itself nearly everywhere (an input far too sparse for its size)
-      // is kept as it is rather than cut away: the report says so.
+      // One cut: each check of the whole sheet costs seconds per million faces. A sheet that
+      // crosses itself nearly everywhere (an input far too sparse for its size) is kept as it
+      // is rather than cut away: the report says so.
       if (found.face_pairs > 0) {
         const TaggedMesh before = sheet;
         const SelfIntersectionCutStats cut =
