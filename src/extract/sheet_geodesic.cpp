@@ -1,5 +1,6 @@
 // Mesh adjacency with edge lengths and geodesic (edge-path) balls.
 #include "sheet_geodesic.h"
+#include "sheet_mesh.h"
 
 #include <cmath>
 #include <functional>
@@ -54,6 +55,20 @@ void GeodesicBall::grow(const MeshAdjacency& a, std::span<const Index> sources, 
       queue.emplace(d + length, w);
     }
   }
+}
+
+std::size_t remove_faces_near(TaggedMesh& tagged, const topology::MeshGraph& graph, std::span<const Index> sources,
+                              double radius) {
+  const TriangleMesh& mesh = tagged.mesh;
+  const MeshAdjacency adjacency = mesh_adjacency(mesh, graph);
+  GeodesicBall ball(mesh.vertices.size());
+  ball.grow(adjacency, sources, radius);
+  std::vector<char> remove(mesh.triangles.size(), 0);
+  for (const Index v : ball.reached())
+    for (std::size_t k = adjacency.face_begin[v]; k < adjacency.face_begin[v + 1]; ++k) remove[adjacency.faces[k]] = 1;
+  const std::size_t removed = remove_faces(tagged, remove);
+  make_manifold(tagged);
+  return removed;
 }
 
 }  // namespace envcrust::extract

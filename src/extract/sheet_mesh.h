@@ -6,9 +6,11 @@
 #include "voronoi_sheet.h"
 
 #include "envcrust/mesh.h"
+#include "envcrust/mesh_graph.h"
 #include "envcrust/nearest_index.h"
 
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace envcrust::extract {
@@ -25,6 +27,12 @@ TaggedMesh triangulate_sheet(const RawSheet& sheet);
 
 /// Remove the faces f with remove[f] (tags kept aligned). Returns the number removed.
 std::size_t remove_faces(TaggedMesh& tagged, const std::vector<char>& remove);
+
+/// Remove every face with a vertex within `radius` (along mesh edges) of a source vertex,
+/// then repair the manifold (a removed band or ball can pinch vertices where it touched the
+/// border). `graph` is the edge table of tagged.mesh. Returns the number of faces removed.
+std::size_t remove_faces_near(TaggedMesh& tagged, const topology::MeshGraph& graph, std::span<const Index> sources,
+                              double radius);
 
 /// Remove duplicate faces; at an edge with >= 3 faces keep the two from the most opposite
 /// Delaunay edges (smallest u_p . u_q). Returns the number of faces removed.

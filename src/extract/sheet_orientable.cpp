@@ -1,5 +1,4 @@
 // Cut a non-orientable sheet open around its orientation seams (SheetOptions::cut_to_orientable).
-#include "sheet_geodesic.h"
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"
@@ -175,15 +174,7 @@ OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius, double m
       stats.still_non_orientable = true;
       break;
     }
-    const MeshAdjacency adjacency = mesh_adjacency(mesh, g);
-    GeodesicBall band(mesh.vertices.size());
-    band.grow(adjacency, choice.cut_vertices, radius);
-    std::vector<char> remove(mesh.triangles.size(), 0);
-    for (const Index v : band.reached())
-      for (std::size_t k = adjacency.face_begin[v]; k < adjacency.face_begin[v + 1]; ++k) remove[adjacency.faces[k]] = 1;
-    stats.faces_removed += remove_faces(tagged, remove);
-    // Removing a band can pinch vertices where it touched the border.
-    make_manifold(tagged);
+    stats.faces_removed += remove_faces_near(tagged, g, choice.cut_vertices, radius);
   }
   return stats;
 }

@@ -1,6 +1,5 @@
 // Cut out the places where the sheet passes through itself
 // (SheetOptions::self_intersection_cut_rel_rho).
-#include "sheet_geodesic.h"
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh.h"
@@ -69,15 +68,7 @@ SelfIntersectionCutStats cut_self_intersections(TaggedMesh& tagged, const mesh::
   for (const Index f : found.face_list)
     for (const Index v : mesh.triangles[f]) sources.push_back(v);
   const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
-  const MeshAdjacency adjacency = mesh_adjacency(mesh, g);
-  GeodesicBall ball(mesh.vertices.size());
-  ball.grow(adjacency, sources, radius);
-  std::vector<char> remove(mesh.triangles.size(), 0);
-  for (const Index f : found.face_list) remove[f] = 1;
-  for (const Index v : ball.reached())
-    for (std::size_t k = adjacency.face_begin[v]; k < adjacency.face_begin[v + 1]; ++k) remove[adjacency.faces[k]] = 1;
-  stats.faces_removed = remove_faces(tagged, remove);
-  make_manifold(tagged);
+  stats.faces_removed = remove_faces_near(tagged, g, sources, radius);
   return stats;
 }
 
