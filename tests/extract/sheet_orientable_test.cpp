@@ -113,29 +113,32 @@ TEST(CutToOrientable, the_test_meshes_are_what_they_claim) {
   EXPECT_TRUE(projective_plane.boundary_loops.empty());
 }
 
-TEST(CutToOrientable, cuts_a_twist_on_a_closed_piece_whatever_the_loop_bound) {
-  TaggedMesh t = capped_moebius_strip();
-  const OrientableCutStats stats = cut_to_orientable(t, 0.15, 6.0);
+namespace {
+
+// cut_to_orientable(t, 0.15, bound) cuts one seam and leaves an orientable manifold; returns
+// its analysis.
+topology::MeshTopology expect_one_seam_cut(TaggedMesh& t, double bound) {
+  const OrientableCutStats stats = cut_to_orientable(t, 0.15, bound);
   EXPECT_EQ(stats.seams, 1u);
   EXPECT_EQ(stats.twists_kept, 0u);
   EXPECT_GT(stats.faces_removed, 0u);
   EXPECT_FALSE(stats.still_non_orientable);
-  const auto after = topology::analyze_topology(t.mesh);
+  auto after = topology::analyze_topology(t.mesh);
   EXPECT_TRUE(after.is_manifold());
   EXPECT_TRUE(after.is_orientable);
-  EXPECT_FALSE(after.boundary_loops.empty());
+  return after;
+}
+
+}  // namespace
+
+TEST(CutToOrientable, cuts_a_twist_on_a_closed_piece_whatever_the_loop_bound) {
+  TaggedMesh t = capped_moebius_strip();
+  EXPECT_FALSE(expect_one_seam_cut(t, 6.0).boundary_loops.empty());
 }
 
 TEST(CutToOrientable, cuts_a_small_cross_cap_under_the_loop_bound) {
   TaggedMesh t = plane_with_a_cross_cap();
-  const OrientableCutStats stats = cut_to_orientable(t, 0.15, 3.0);
-  EXPECT_EQ(stats.seams, 1u);
-  EXPECT_EQ(stats.twists_kept, 0u);
-  EXPECT_GT(stats.faces_removed, 0u);
-  EXPECT_FALSE(stats.still_non_orientable);
-  const auto after = topology::analyze_topology(t.mesh);
-  EXPECT_TRUE(after.is_manifold());
-  EXPECT_TRUE(after.is_orientable);
+  expect_one_seam_cut(t, 3.0);
   EXPECT_EQ(t.face_dot.size(), t.mesh.triangles.size());
 }
 
