@@ -12,15 +12,17 @@ namespace envcrust::extract {
 mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::SelfIntersections found, int rounds) {
   constexpr int kRings = 2;       // the region: the faces' vertices and two rings around them
   constexpr int kIterations = 3;  // umbrella steps per round
+  if (found.face_pairs == 0 || rounds <= 0) return found;
+  // Only positions move: the neighbours stay the same through the rounds.
+  const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
+  std::vector<std::vector<Index>> neighbours(mesh.vertices.size()), border(mesh.vertices.size());
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    const auto [a, b] = g.edges[e];
+    neighbours[a].push_back(b), neighbours[b].push_back(a);
+    if (g.face_count_of_edge(e) == 1) border[a].push_back(b), border[b].push_back(a);
+  }
   for (int round = 0;; ++round) {
     if (found.face_pairs == 0 || round == rounds) return found;
-    const topology::MeshGraph g = topology::build_mesh_graph(mesh.triangles, mesh.vertices.size());
-    std::vector<std::vector<Index>> neighbours(mesh.vertices.size()), border(mesh.vertices.size());
-    for (std::size_t e = 0; e < g.edges.size(); ++e) {
-      const auto [a, b] = g.edges[e];
-      neighbours[a].push_back(b), neighbours[b].push_back(a);
-      if (g.face_count_of_edge(e) == 1) border[a].push_back(b), border[b].push_back(a);
-    }
     std::vector<char> in_region(mesh.vertices.size(), 0);
     std::vector<Index> region;
     for (const Index f : found.face_list)

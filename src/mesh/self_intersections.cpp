@@ -22,45 +22,29 @@ using Face = std::array<Index, 3>;
 
 // Whether faces f and g (distinct vertex sets, neither degenerate) meet beyond what they share.
 bool faces_meet(const std::vector<Point3>& p, const Face& f, const Face& g) {
-  int in_g[3] = {-1, -1, -1};  // per corner of f: its corner in g, or -1
-  int shared = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (f[i] == g[j]) in_g[i] = j, ++shared;
-  if (shared == 0)
-    return CGAL::do_intersect(Kernel::Triangle_3(p[f[0]], p[f[1]], p[f[2]]),
-                              Kernel::Triangle_3(p[g[0]], p[g[1]], p[g[2]]));
-  auto free_corner = [](const Face& face, const auto& is_shared) {
-    for (int k = 0; k < 3; ++k)
-      if (!is_shared(k)) return face[k];
-    return face[0];
-  };
-  auto shared_in_f = [&](int k) { return in_g[k] >= 0; };
-  auto shared_in_g = [&](int k) { return std::find(std::begin(in_g), std::end(in_g), k) != std::end(in_g); };
-  if (shared == 2) {
+  // The corners of each face that the other does not have.
+  Index free_f[3], free_g[3];
+  int nf = 0, ng = 0;
+  for (const Index v : f)
+    if (std::find(g.begin(), g.end(), v) == g.end()) free_f[nf++] = v;
+  for (const Index v : g)
+    if (std::find(f.begin(), f.end(), v) == f.end()) free_g[ng++] = v;
+  const Kernel::Triangle_3 tf(p[f[0]], p[f[1]], p[f[2]]), tg(p[g[0]], p[g[1]], p[g[2]]);
+  if (nf == 3) return CGAL::do_intersect(tf, tg);
+  if (nf == 1) {
     // Along a shared edge (s, t), two triangles only overlap when they are coplanar and their
     // free corners lie on the same side of the edge.
-    Index s = 0, t = 0;
-    bool first = true;
-    for (int i = 0; i < 3; ++i)
-      if (in_g[i] >= 0) (first ? s : t) = f[i], first = false;
-    const Point3& a = p[free_corner(f, shared_in_f)];
-    const Point3& b = p[free_corner(g, shared_in_g)];
-    return CGAL::orientation(p[s], p[t], a, b) == CGAL::COPLANAR &&
-           CGAL::coplanar_orientation(p[s], p[t], a, b) == CGAL::POSITIVE;
+    Index shared[2];
+    int ns = 0;
+    for (const Index v : f)
+      if (v != free_f[0]) shared[ns++] = v;
+    const Point3 &s = p[shared[0]], &t = p[shared[1]], &a = p[free_f[0]], &b = p[free_g[0]];
+    return CGAL::orientation(s, t, a, b) == CGAL::COPLANAR && CGAL::coplanar_orientation(s, t, a, b) == CGAL::POSITIVE;
   }
   // One shared vertex: the planes' common line leaves each triangle through its opposite
   // edge, so they meet beyond the vertex exactly when an opposite edge meets the other face.
-  Index fa = 0, fb = 0, ga = 0, gb = 0;
-  int n = 0;
-  for (int i = 0; i < 3; ++i)
-    if (in_g[i] < 0) (n++ == 0 ? fa : fb) = f[i];
-  n = 0;
-  for (int j = 0; j < 3; ++j)
-    if (!shared_in_g(j)) (n++ == 0 ? ga : gb) = g[j];
-  const Kernel::Triangle_3 tf(p[f[0]], p[f[1]], p[f[2]]), tg(p[g[0]], p[g[1]], p[g[2]]);
-  return CGAL::do_intersect(Kernel::Segment_3(p[fa], p[fb]), tg) ||
-         CGAL::do_intersect(Kernel::Segment_3(p[ga], p[gb]), tf);
+  return CGAL::do_intersect(Kernel::Segment_3(p[free_f[0]], p[free_f[1]]), tg) ||
+         CGAL::do_intersect(Kernel::Segment_3(p[free_g[0]], p[free_g[1]]), tf);
 }
 
 }  // namespace
