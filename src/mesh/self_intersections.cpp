@@ -9,9 +9,13 @@
 #include <CGAL/centroid.h>
 #include <CGAL/intersections.h>
 
+#include <CGAL/Random.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <mutex>
+#include <unordered_set>
 
 namespace envcrust::mesh {
 namespace {
@@ -47,6 +51,51 @@ bool faces_meet(const std::vector<Point3>& p, const Face& f, const Face& g) {
          CGAL::do_intersect(Kernel::Segment_3(p[free_g[0]], p[free_g[1]]), tf);
 }
 
+// The boxes that may overlap one of the flagged boxes: those sharing a cell of a grid whose
+// cells are as large as the largest flagged box (two overlapping closed boxes share the cell
+// of a common point). A linear pass that spares the tree search the bulk of a large mesh
+// when few faces are flagged; boxes spanning many cells are kept without looking.
+std::vector<const Box*> near_flagged(const std::vector<const Box*>& all, const std::vector<const Box*>& flagged) {
+  constexpr long kMaxCellsPerAxis = 4;
+  double cell = 0;
+  for (const Box* b : flagged)
+    for (int d = 0; d < 3; ++d) cell = std::max(cell, b->max_coord(d) - b->min_coord(d));
+  double extent = 0;
+  for (const Box* b : all)
+    for (int d = 0; d < 3; ++d) extent = std::max({extent, std::abs(b->min_coord(d)), std::abs(b->max_coord(d))});
+  // Cells too small to count in a long (faces of zero size, far from the origin): no filter.
+  if (flagged.empty() || !(cell > 1e-12 * extent) || !std::isfinite(extent)) return all;
+  auto range = [&](const Box* b, int d) {
+    return std::pair(static_cast<long>(std::floor(b->min_coord(d) / cell)),
+                     static_cast<long>(std::floor(b->max_coord(d) / cell)));
+  };
+  auto key = [](long x, long y, long z) {
+    return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u) ^
+           (static_cast<std::uint64_t>(z) * 83492791u);
+  };
+  std::unordered_set<std::uint64_t> cells;
+  for (const Box* b : flagged) {
+    const auto [x0, x1] = range(b, 0);
+    const auto [y0, y1] = range(b, 1);
+    const auto [z0, z1] = range(b, 2);
+    for (long x = x0; x <= x1; ++x)
+      for (long y = y0; y <= y1; ++y)
+        for (long z = z0; z <= z1; ++z) cells.insert(key(x, y, z));
+  }
+  std::vector<const Box*> near;
+  for (const Box* b : all) {
+    const auto [x0, x1] = range(b, 0);
+    const auto [y0, y1] = range(b, 1);
+    const auto [z0, z1] = range(b, 2);
+    bool hit = x1 - x0 >= kMaxCellsPerAxis || y1 - y0 >= kMaxCellsPerAxis || z1 - z0 >= kMaxCellsPerAxis;
+    for (long x = x0; x <= x1 && !hit; ++x)
+      for (long y = y0; y <= y1 && !hit; ++y)
+        for (long z = z0; z <= z1 && !hit; ++z) hit = cells.count(key(x, y, z)) != 0;
+    if (hit) near.push_back(b);
+  }
+  return near;
+}
+
 }  // namespace
 
 SelfIntersections self_intersections(const TriangleMesh& input, std::size_t max_examples,
@@ -67,8 +116,8 @@ SelfIntersections self_intersections(const TriangleMesh& input, std::size_t max_
   std::mutex examples_mutex;
   SelfIntersections out;
   auto is_flagged = [&](std::uint32_t f) { return only_faces == nullptr || (*only_faces)[f] != 0; };
-  auto callback = [&](const Box& x, const Box& y) {
-    const std::uint32_t f = x.info(), g = y.info();
+  auto callback = [&](const Box* x, const Box* y) {
+    const std::uint32_t f = x->info(), g = y->info();
     // Against all faces, a pair of two flagged faces comes twice, and a face meets itself.
     if (only_faces != nullptr && (f == g || (is_flagged(g) && g < f))) return;
     if (!faces_meet(mesh.vertices, mesh.triangles[f], mesh.triangles[g])) return;
@@ -80,16 +129,26 @@ SelfIntersections self_intersections(const TriangleMesh& input, std::size_t max_
       out.examples.push_back(CGAL::centroid(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]));
     }
   };
+  // As CGAL's own self-intersection search does: the tree sorts pointers rather than the
+  // boxes themselves, in an order shuffled so that the parallel tasks get even shares, and
+  // leaves of up to 2000 boxes are scanned directly.
+  constexpr std::ptrdiff_t kCutoff = 2000;
+  CGAL::Random random(0);
+  std::vector<const Box*> all(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) all[k] = &boxes[k];
+  CGAL::cpp98::random_shuffle(all.begin(), all.end(), random);
   if (only_faces == nullptr) {
-    CGAL::box_self_intersection_d<CGAL::Parallel_tag>(boxes.begin(), boxes.end(), callback);
+    CGAL::box_self_intersection_d<CGAL::Parallel_tag>(all.begin(), all.end(), callback, kCutoff);
   } else {
     if (only_faces->size() != mesh.triangles.size())
       throw InvalidInput("self_intersections: " + std::to_string(only_faces->size()) + " face flags for " +
                          std::to_string(mesh.triangles.size()) + " faces");
-    std::vector<Box> flagged;
-    for (const Box& b : boxes)
-      if (is_flagged(b.info())) flagged.push_back(b);
-    CGAL::box_intersection_d<CGAL::Parallel_tag>(flagged.begin(), flagged.end(), boxes.begin(), boxes.end(), callback);
+    std::vector<const Box*> flagged;
+    for (const Box* b : all)
+      if (is_flagged(b->info())) flagged.push_back(b);
+    std::vector<const Box*> near = near_flagged(all, flagged);
+    CGAL::box_intersection_d<CGAL::Parallel_tag>(flagged.begin(), flagged.end(), near.begin(), near.end(), callback,
+                                                 kCutoff);
   }
   out.face_pairs = pairs.load();
   for (std::size_t f = 0; f < involved.size(); ++f)

@@ -112,3 +112,34 @@ TEST(SelfIntersections, a_recheck_looks_at_the_flagged_faces_only) {
   const std::vector<char> wrong = {1, 0};
   EXPECT_THROW((void)mesh::self_intersections(m, 8, &wrong), InvalidInput);
 }
+
+// The flagged search prefilters the other faces on a grid sized by the flagged ones: a big
+// face spanning many cells of a fine grid, and small faces against a coarse one, are still
+// all found.
+TEST(SelfIntersections, a_recheck_finds_every_pair_whatever_the_face_sizes) {
+  TriangleMesh m = uv_sphere(40, 60);  // small faces
+  const std::size_t sphere_faces = m.triangles.size();
+  const auto first = static_cast<Index>(m.vertices.size());
+  m.vertices.emplace_back(-3, -3, 0.3);
+  m.vertices.emplace_back(3, -3, 0.3);
+  m.vertices.emplace_back(0, 3, 0.3);
+  m.triangles.push_back({first, first + 1, first + 2});  // one big face across the sphere
+  const std::size_t all = mesh::self_intersections(m).face_pairs;
+  ASSERT_GE(all, 60u);  // at least once around the circle where the plane cuts the sphere
+  std::vector<char> big(m.triangles.size(), 0), small(m.triangles.size(), 0);
+  big.back() = 1;
+  for (std::size_t f = 0; f < sphere_faces; ++f) small[f] = 1;
+  EXPECT_EQ(mesh::self_intersections(m, 8, &big).face_pairs, all);
+  EXPECT_EQ(mesh::self_intersections(m, 8, &small).face_pairs, all);
+  // Only the faces above the plane: the pairs of the ring's upper half.
+  std::vector<char> upper(m.triangles.size(), 0);
+  std::size_t upper_faces = 0;
+  for (std::size_t f = 0; f < sphere_faces; ++f) {
+    bool above = true;
+    for (const Index v : m.triangles[f]) above = above && m.vertices[v].z() > 0.3;
+    upper[f] = above ? 1 : 0;
+    upper_faces += upper[f];
+  }
+  ASSERT_GT(upper_faces, 0u);
+  EXPECT_EQ(mesh::self_intersections(m, 8, &upper).face_pairs, 0u);  // none of them reaches the plane
+}
