@@ -349,6 +349,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"self_intersections_smoothed", s.self_intersections_smoothed},
                   {"faces_removed_at_self_intersections", s.faces_removed_at_self_intersections},
                   {"self_intersections_cut", s.self_intersections_cut},
+                  {"self_intersection_cut_rounds", s.self_intersection_cut_rounds},
                   {"self_intersection_cut_rel_rho", cmd.options.sheet.self_intersection_cut_rel_rho},
                   {"cut_to_orientable", cmd.options.sheet.cut_to_orientable},
                   {"orientable_max_twist_loop_rel_rho",
@@ -378,13 +379,18 @@ void run_reconstruct(ReconstructCommand& cmd) {
   std::optional<analysis::AnalysisReport> report;
   std::optional<double> boundary_gap;  // of the reference's boundary from the samples, / diagonal
   if (!cmd.no_analysis) {
+    // The truth when known: the exact surface of a built-in, a mesh input's own surface (its
+    // vertices alone would count the triangles' size as error); else the input points.
     analysis::Reference reference;
     if (!cmd.reference.empty()) {
       reference = load_reference(cmd.reference);
-    } else if (is_builtin_spec(cmd.input)) {
+      j["reference"] = cmd.reference;
+    } else if (is_builtin_spec(cmd.input) || loaded.source == "mesh") {
       reference = load_reference(cmd.input);
+      j["reference"] = cmd.input;
     } else {
       reference.points = loaded.samples.points;
+      j["reference"] = "input points";
     }
     report = result.topology ? analysis::analyze_mesh(result.mesh, std::move(*result.topology), reference)
                              : analysis::analyze_mesh(result.mesh, reference);
@@ -537,6 +543,11 @@ void register_reconstruct(CLI::App& app) {
                   "remove the faces within this radius (in rho) and close the holes with discs (reported; 0: off)")
       ->capture_default_str()
       ->check(number_above(0, true));
+  sub->add_option("--self-intersection-rounds", cmd->options.sheet.self_intersection_cut_rounds,
+                  "Cut rounds: after each, the result is checked again and relaxed and cut where it still passes "
+                  "through itself")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   sub->add_flag("--crust-check", cmd->options.use_envelope_crust_check,
                 "Also run the Power Crust on the envelope and report its topology (chi(E) = 2 chi(M))");
   sub->add_flag("--remesh", cmd->use_remesh,
@@ -554,7 +565,7 @@ void register_reconstruct(CLI::App& app) {
                   "With --remesh: resample (default: border resampled along itself) or keep (every border vertex kept)")
       ->transform(CLI::CheckedTransformer(boundary_modes, CLI::ignore_case));
   sub->add_option("-r,--reference", cmd->reference,
-                  "Reference for distances (default: the exact surface for builtin inputs, else the input points)");
+                  "Reference for distances (default: the exact surface of a builtin, the surface of an input mesh, else the input points)");
   sub->add_flag("--no-analysis", cmd->no_analysis, "Skip the analysis of the output");
   sub->add_flag("--no-adaptive-retry", cmd->no_adaptive_retry,
                 "Keep the uniform-rho run even when its result has holes the input has not, or more handles than "

@@ -105,8 +105,11 @@ struct SheetOptions {
   /// Last: where faces pass through each other (folds that noise or a tight rim leave), relax
   /// the vertices there (smooth_self_intersections); where that is not enough, remove the
   /// faces within this radius (in rho, along the mesh) of them and close the holes away from
-  /// the boundary curves with discs (once; the discs are not checked again). 0: off. >= 0.
+  /// the boundary curves with discs. 0: off. >= 0.
   double self_intersection_cut_rel_rho = 0.5;
+  /// Cut rounds: after each, the sheet is checked again, relaxed and cut where the discs or
+  /// what the cut left still pass through it. >= 1.
+  int self_intersection_cut_rounds = 3;
 };
 
 /// What extract_sheet did.
@@ -139,10 +142,12 @@ struct SheetStats {
   /// SheetOptions::fill_cut_holes: holes left by the cuts closed with a disc.
   std::size_t cut_holes_filled = 0;
   /// SheetOptions::self_intersection_cut_rel_rho: intersecting face pairs found, those that
-  /// relaxing the vertices opened, those left to the cut, and the faces it removed.
+  /// relaxing the vertices opened, those left to the first cut, the cut rounds run, and the
+  /// faces the cuts removed.
   std::size_t self_intersections_found = 0;
   std::size_t self_intersections_smoothed = 0;
   std::size_t self_intersections_cut = 0;
+  int self_intersection_cut_rounds = 0;
   std::size_t faces_removed_at_self_intersections = 0;
   /// Wall-clock seconds per step: the Delaunay triangulation of the envelope samples and
   /// the Voronoi polygons; cleaning (far faces, components, manifold repairs, small holes);

@@ -254,7 +254,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (options.self_intersection_cut_rel_rho > 0) {
     progress.report("sheet: self-intersections", 0.9);
     // Relaxed first: most folds open without losing faces; what is left is cut out and the
-    // holes closed (the discs are not checked again: the analysis reports what is left).
+    // holes closed with discs. A disc can pass through the sheet again, or a cut leave a
+    // crossing: the next round checks the sheet again, relaxes and cuts.
     mesh::SelfIntersections found = mesh::self_intersections(sheet.mesh, 0);
     result.stats.self_intersections_found = found.face_pairs;
     if (found.face_pairs > 0) {
@@ -262,24 +263,38 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       found = smooth_self_intersections(sheet.mesh, std::move(found), 3);
       result.stats.self_intersections_smoothed = first - std::min(first, found.face_pairs);
       result.stats.self_intersections_cut = found.face_pairs;
-      // One cut: each check of the whole sheet costs seconds per million faces. A sheet that
-      // crosses itself nearly everywhere (an input far too sparse for its size) is kept as it
-      // is rather than cut away: the report says so.
-      if (found.face_pairs > 0) {
-        const TaggedMesh before = sheet;
-        const SelfIntersectionCutStats cut =
-            cut_self_intersections(sheet, found, options.self_intersection_cut_rel_rho * envelope.rho);
+      // A round that would leave less than 3/4 of the faces the first found is undone and the
+      // cutting stops: a sheet that crosses itself nearly everywhere (an input far too sparse
+      // for its size) is kept as it is rather than cut away, and the report says so.
+      const std::size_t faces_at_start = sheet.mesh.triangles.size(), to_cut = found.face_pairs;
+      const int max_rounds = std::max(1, options.self_intersection_cut_rounds);
+      std::size_t removed = 0;
+      int rounds = 0;
+      while (found.face_pairs > 0 && rounds < max_rounds) {
+        TaggedMesh previous = sheet;
+        const std::size_t removed_now =
+            cut_self_intersections(sheet, found, options.self_intersection_cut_rel_rho * envelope.rho).faces_removed;
         tidy_after_cut();
-        if (4 * sheet.mesh.triangles.size() < 3 * before.mesh.triangles.size()) {
-          sheet = before;
-          result.stats.self_intersections_cut = 0;
-          result.warnings.push_back("the sheet passes through itself at " + std::to_string(found.face_pairs) +
-                                    " face pairs, too many to cut out (" + std::to_string(cut.faces_removed) + " of " +
-                                    std::to_string(before.mesh.triangles.size()) + " faces): left as it is");
-        } else {
-          result.stats.faces_removed_at_self_intersections = cut.faces_removed;
+        if (4 * sheet.mesh.triangles.size() < 3 * faces_at_start) {
+          sheet = std::move(previous);
+          if (rounds == 0)
+            result.warnings.push_back("the sheet passes through itself at " + std::to_string(to_cut) +
+                                      " face pairs, too many to cut out (" + std::to_string(removed_now) + " of " +
+                                      std::to_string(faces_at_start) + " faces): left as it is");
+          break;
+        }
+        removed += removed_now;
+        ++rounds;
+        // The cut removed every face that passed through another: only the faces the repairs
+        // and discs made can now. The last round's result is checked by the analysis.
+        if (rounds < max_rounds) {
+          const std::vector<char> made = faces_not_in(sheet.mesh, previous.mesh);
+          found = smooth_self_intersections(sheet.mesh, mesh::self_intersections(sheet.mesh, 0, &made), 3);
         }
       }
+      if (rounds == 0) result.stats.self_intersections_cut = 0;
+      result.stats.self_intersection_cut_rounds = rounds;
+      result.stats.faces_removed_at_self_intersections = removed;
     }
     if (result.stats.self_intersections_found > 0) {
       std::ostringstream w;
@@ -287,7 +302,9 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
         << " face pairs: relaxed there"
         << (result.stats.self_intersections_cut > 0
                 ? ", then " + std::to_string(result.stats.faces_removed_at_self_intersections) + " faces removed around the " +
-                      std::to_string(result.stats.self_intersections_cut) + " pairs that was not enough for, and the holes closed"
+                      std::to_string(result.stats.self_intersections_cut) + " pairs that was not enough for, and the holes closed (" +
+                      std::to_string(result.stats.self_intersection_cut_rounds) + " round" +
+                      (result.stats.self_intersection_cut_rounds == 1 ? "" : "s") + ")"
                 : std::string());
       result.warnings.push_back(w.str());
     }

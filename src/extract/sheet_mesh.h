@@ -146,6 +146,11 @@ struct SelfIntersectionCutStats {
 SelfIntersectionCutStats cut_self_intersections(TaggedMesh& tagged, const mesh::SelfIntersections& found,
                                                 double radius);
 
+/// Flags the faces of `after` that `before` does not have: no face of `before` has the same
+/// three corner positions (in any order). After a cut and its repairs, only these can pass
+/// through the others when the faces kept did not.
+std::vector<char> faces_not_in(const TriangleMesh& after, const TriangleMesh& before);
+
 /// What cut_local_handles did.
 struct HandleCutStats {
   std::size_t balls = 0;  ///< seed balls that were not discs

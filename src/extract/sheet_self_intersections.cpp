@@ -6,6 +6,8 @@
 #include "envcrust/mesh_graph.h"
 
 #include <algorithm>
+#include <cstring>
+#include <functional>
 
 namespace envcrust::extract {
 
@@ -58,6 +60,39 @@ mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::Self
       for (const Index v : mesh.triangles[f]) moved_face[f] |= in_region[v];
     found = mesh::self_intersections(mesh, 0, &moved_face);
   }
+}
+
+std::vector<char> faces_not_in(const TriangleMesh& after, const TriangleMesh& before) {
+  // A face is its corners' coordinates, in increasing order: hashed, then compared exactly.
+  using Corners = std::array<Point3, 3>;
+  auto corners = [](const TriangleMesh& m, std::size_t f) {
+    Corners c = {m.vertices[m.triangles[f][0]], m.vertices[m.triangles[f][1]], m.vertices[m.triangles[f][2]]};
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  auto hash = [](const Corners& c) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (const Point3& p : c)
+      for (int d = 0; d < 3; ++d) {
+        std::uint64_t bits;
+        const double x = p[d] == 0 ? 0.0 : p[d];  // -0 and +0 alike
+        std::memcpy(&bits, &x, sizeof bits);
+        h = (h ^ bits) * 1099511628211ull;
+      }
+    return h;
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> known(before.triangles.size());
+  for (std::size_t f = 0; f < before.triangles.size(); ++f) known[f] = {hash(corners(before, f)), f};
+  std::sort(known.begin(), known.end());
+  std::vector<char> is_new(after.triangles.size(), 1);
+  for (std::size_t f = 0; f < after.triangles.size(); ++f) {
+    const Corners c = corners(after, f);
+    const std::uint64_t h = hash(c);
+    for (auto it = std::lower_bound(known.begin(), known.end(), std::pair(h, std::size_t{0}));
+         it != known.end() && it->first == h && is_new[f] != 0; ++it)
+      if (corners(before, it->second) == c) is_new[f] = 0;
+  }
+  return is_new;
 }
 
 SelfIntersectionCutStats cut_self_intersections(TaggedMesh& tagged, const mesh::SelfIntersections& found,

@@ -51,24 +51,50 @@ bool faces_meet(const std::vector<Point3>& p, const Face& f, const Face& g) {
          CGAL::do_intersect(Kernel::Segment_3(p[free_g[0]], p[free_g[1]]), tf);
 }
 
-// The boxes that may overlap one of the flagged boxes: those sharing a cell of a grid whose
-// cells are as large as the largest flagged box (two overlapping closed boxes share the cell
-// of a common point). A linear pass that spares the tree search the bulk of a large mesh
-// when few faces are flagged; boxes spanning many cells are kept without looking.
+// The boxes that may overlap one of the flagged boxes: those sharing a cell of a grid with a
+// flagged one (two overlapping closed boxes share the cell of a common point). A linear pass
+// that spares the tree search the bulk of a large mesh when few faces are flagged. The cells
+// are as small as a typical flagged box, larger if the big ones would need too many; boxes
+// spanning many cells are kept without looking.
 std::vector<const Box*> near_flagged(const std::vector<const Box*>& all, const std::vector<const Box*>& flagged) {
   constexpr long kMaxCellsPerAxis = 4;
-  double cell = 0;
-  for (const Box* b : flagged)
-    for (int d = 0; d < 3; ++d) cell = std::max(cell, b->max_coord(d) - b->min_coord(d));
+  if (flagged.empty()) return all;
+  std::vector<double> sizes;
+  sizes.reserve(flagged.size());
+  for (const Box* b : flagged) {
+    double size = 0;
+    for (int d = 0; d < 3; ++d) size = std::max(size, b->max_coord(d) - b->min_coord(d));
+    sizes.push_back(size);
+  }
+  std::sort(sizes.begin(), sizes.end());
   double extent = 0;
   for (const Box* b : all)
     for (int d = 0; d < 3; ++d) extent = std::max({extent, std::abs(b->min_coord(d)), std::abs(b->max_coord(d))});
-  // Cells too small to count in a long (faces of zero size, far from the origin): no filter.
-  if (flagged.empty() || !(cell > 1e-12 * extent) || !std::isfinite(extent)) return all;
-  auto range = [&](const Box* b, int d) {
+  if (!std::isfinite(extent)) return all;
+  auto cells_of = [](const Box* b, int d, double cell) {
     return std::pair(static_cast<long>(std::floor(b->min_coord(d) / cell)),
                      static_cast<long>(std::floor(b->max_coord(d) / cell)));
   };
+  // The median flagged size, else the 90th percentile, else the largest: the first for which
+  // the flagged boxes cover at most 27 cells each on average.
+  double cell = 0;
+  for (const double q : {0.5, 0.9, 1.0}) {
+    cell = sizes[std::min(sizes.size() - 1, static_cast<std::size_t>(q * static_cast<double>(sizes.size())))];
+    // Cells too small to count in a long (faces of zero size, far from the origin): no filter.
+    if (!(cell > 1e-12 * extent)) continue;
+    double total = 0;
+    for (const Box* b : flagged) {
+      double n = 1;
+      for (int d = 0; d < 3; ++d) {
+        const auto [lo, hi] = cells_of(b, d, cell);
+        n *= static_cast<double>(hi - lo + 1);
+      }
+      total += n;
+    }
+    if (total <= 27.0 * static_cast<double>(flagged.size())) break;
+  }
+  if (!(cell > 1e-12 * extent)) return all;
+  auto range = [&](const Box* b, int d) { return cells_of(b, d, cell); };
   auto key = [](long x, long y, long z) {
     return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u) ^
            (static_cast<std::uint64_t>(z) * 83492791u);

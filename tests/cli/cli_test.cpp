@@ -541,6 +541,28 @@ TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
   EXPECT_FALSE(std::filesystem::exists(path("x.ply")));
 }
 
+// Without --reference a mesh input is measured against its own surface: its 338 vertices alone
+// would read the cylinder's long triangles as error (9.6% of the diagonal, not 0.2%).
+TEST_F(CliTest, reconstruct_measures_a_mesh_input_against_its_own_surface) {
+  ASSERT_EQ(run_envcrust("sample cylinder --mesh -q -o " + path("c.off")).exit_code, 0);
+  const auto j = run_envcrust_json("reconstruct " + path("c.off") + " -o " + path("c.ply") + " --json");
+  EXPECT_EQ(j["reference"], path("c.off"));
+  EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+  EXPECT_LT(j["analysis"]["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.005);
+  ASSERT_EQ(run_envcrust("sample cylinder -n 3000 -q -o " + path("c.xyz")).exit_code, 0);
+  const auto k = run_envcrust_json("reconstruct " + path("c.xyz") + " -o " + path("c2.ply") + " --json");
+  EXPECT_EQ(k["reference"], "input points");
+  EXPECT_EQ(run_envcrust_json("reconstruct builtin:cylinder -n 3000 -o " + path("c3.ply") + " --json")["reference"],
+            "builtin:cylinder");
+}
+
+TEST_F(CliTest, reconstruct_refuses_zero_self_intersection_rounds) {
+  const auto bad = run_envcrust("reconstruct builtin:cylinder --self-intersection-rounds 0 -o " + path("x.ply"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--self-intersection-rounds: Value 0 not in range 1 to 100"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(path("x.ply")));
+}
+
 // A square scanned with an unsampled stripe (0.8 x 0.06, about 6 local spacings wide): the
 // detector reads the stripe as a second boundary loop, and the hint names the
 // --boundary-min-width that drops it; with it the square is one disc.

@@ -161,3 +161,19 @@ TEST(SnapBorder, issue_5_two_vertices_never_snap_onto_one_corner) {
   EXPECT_TRUE(topo.is_manifold());
   EXPECT_EQ(topo.components.size(), 2u);
 }
+
+// After a cut and its repairs only the faces it made are checked again for crossings: a face
+// is new when no face before had its three corner positions, whatever the indices or order.
+TEST(FacesNotIn, a_face_is_known_by_its_corner_positions) {
+  TriangleMesh before;
+  before.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0), Point3(1, 1, 0), Point3(-0.0, 2, 0)};
+  before.triangles = {{0, 1, 2}, {1, 3, 2}, {2, 3, 4}};
+  TriangleMesh after;
+  // The same points re-indexed (one twice), the first face turned, the second replaced by
+  // one with a moved corner, the third kept (0 and -0 alike), and a new one.
+  after.vertices = {Point3(1, 1, 0), Point3(0, 1, 0), Point3(1, 0, 0), Point3(0, 0, 0), Point3(0, 2, 0),
+                    Point3(1, 1, 1e-12), Point3(0, 1, 0)};
+  after.triangles = {{2, 6, 3}, {2, 5, 1}, {1, 0, 4}, {3, 2, 4}};
+  EXPECT_EQ(faces_not_in(after, before), (std::vector<char>{0, 1, 0, 1}));
+  EXPECT_EQ(faces_not_in(after, TriangleMesh{}), (std::vector<char>{1, 1, 1, 1}));
+}
