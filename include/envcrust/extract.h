@@ -107,8 +107,9 @@ struct SheetOptions {
   /// faces within this radius (in rho, along the mesh) of them and close the holes away from
   /// the boundary curves with discs. 0: off. >= 0.
   double self_intersection_cut_rel_rho = 0.5;
-  /// Cut rounds: after each, the sheet is checked again, relaxed and cut where the discs or
-  /// what the cut left still pass through it. >= 1.
+  /// Cut rounds: after each, the faces the cut's repairs and discs made are checked, relaxed
+  /// and cut again where they pass through the sheet; a round that leaves no fewer pairs than
+  /// it found is undone and ends the cutting. >= 1.
   int self_intersection_cut_rounds = 3;
 };
 
@@ -142,13 +143,14 @@ struct SheetStats {
   /// SheetOptions::fill_cut_holes: holes left by the cuts closed with a disc.
   std::size_t cut_holes_filled = 0;
   /// SheetOptions::self_intersection_cut_rel_rho: intersecting face pairs found, those that
-  /// relaxing the vertices opened, those left to the first cut, the cut rounds run, and the
-  /// faces the cuts removed.
+  /// relaxing the vertices opened, those left to the first cut, the cut rounds kept, the
+  /// faces they removed, and the pairs left in the sheet.
   std::size_t self_intersections_found = 0;
   std::size_t self_intersections_smoothed = 0;
   std::size_t self_intersections_cut = 0;
   int self_intersection_cut_rounds = 0;
   std::size_t faces_removed_at_self_intersections = 0;
+  std::size_t self_intersections_left = 0;
   /// Wall-clock seconds per step: the Delaunay triangulation of the envelope samples and
   /// the Voronoi polygons; cleaning (far faces, components, manifold repairs, small holes);
   /// projection onto the samples, trimming and the border snap; the final manifold check;

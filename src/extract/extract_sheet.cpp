@@ -263,9 +263,12 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       found = smooth_self_intersections(sheet.mesh, std::move(found), 3);
       result.stats.self_intersections_smoothed = first - std::min(first, found.face_pairs);
       result.stats.self_intersections_cut = found.face_pairs;
-      // A round that would leave less than 3/4 of the faces the first found is undone and the
-      // cutting stops: a sheet that crosses itself nearly everywhere (an input far too sparse
-      // for its size) is kept as it is rather than cut away, and the report says so.
+      // Each round cuts, closes the holes, then checks what that made: the cut removed every
+      // face that passed through another, so only the faces the repairs and discs made can
+      // now. A round is kept only when it leaves fewer pairs than it found. A round that would
+      // leave less than 3/4 of the faces is undone too: a sheet that crosses itself nearly
+      // everywhere (an input far too sparse for its size) is kept rather than cut away, and
+      // the report says so.
       const std::size_t faces_at_start = sheet.mesh.triangles.size(), to_cut = found.face_pairs;
       const int max_rounds = std::max(1, options.self_intersection_cut_rounds);
       std::size_t removed = 0;
@@ -283,19 +286,22 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                                       std::to_string(faces_at_start) + " faces): left as it is");
           break;
         }
+        const std::vector<char> made = faces_not_in(sheet.mesh, previous.mesh);
+        mesh::SelfIntersections left =
+            smooth_self_intersections(sheet.mesh, mesh::self_intersections(sheet.mesh, 0, &made), 3);
+        if (left.face_pairs >= found.face_pairs) {
+          sheet = std::move(previous);
+          break;
+        }
+        found = std::move(left);
         removed += removed_now;
         ++rounds;
-        // The cut removed every face that passed through another: only the faces the repairs
-        // and discs made can now. The last round's result is checked by the analysis.
-        if (rounds < max_rounds) {
-          const std::vector<char> made = faces_not_in(sheet.mesh, previous.mesh);
-          found = smooth_self_intersections(sheet.mesh, mesh::self_intersections(sheet.mesh, 0, &made), 3);
-        }
       }
       if (rounds == 0) result.stats.self_intersections_cut = 0;
       result.stats.self_intersection_cut_rounds = rounds;
       result.stats.faces_removed_at_self_intersections = removed;
     }
+    result.stats.self_intersections_left = found.face_pairs;
     if (result.stats.self_intersections_found > 0) {
       std::ostringstream w;
       w << "the sheet passed through itself at " << result.stats.self_intersections_found

@@ -70,6 +70,7 @@ TEST_F(CliTest, issue_5_bunny_is_one_orientable_genus_0_piece_with_its_base_hole
   EXPECT_GT(j["sheet"]["self_intersections_found"].get<long>(), 1000);
   EXPECT_GE(j["sheet"]["self_intersection_cut_rounds"].get<int>(), 2);
   EXPECT_EQ(a["self_intersections"]["face_pairs"], 0);
+  EXPECT_EQ(j["sheet"]["self_intersections_left"], 0);
   EXPECT_EQ(a["is_embedded"], true);
   // No topology hint is left; the only one names the base's narrow slot (a real hole, 4.4
   // spacings wide) as what --boundary-min-width would drop.
@@ -98,8 +99,8 @@ TEST_F(CliTest, issue_5_bunny_with_adaptive_rho_is_one_genus_0_piece) {
 // raised to bridge its sparse parts, gave genus 3-8 and the run was repeated with adaptive
 // rho. Since the sheet's self-intersections are repaired (30,386 face pairs: most relaxed,
 // the rest cut out with the handles they sat on and closed), the uniform run is already the
-// input's disc, so it is kept without a retry (measured 5.0% and 6.0% of the diagonal: ears
-// and mouth cut and closed; 1,313 crossing pairs are left after 3 cut rounds, 2,150 after
+// input's disc, so it is kept without a retry (measured 4.9% and 6.0% of the diagonal: ears
+// and mouth cut and closed; 520 crossing pairs are left after 3 cut rounds, 2,150 after
 // one, which the report counts).
 TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "cgal_lion_head";
@@ -112,8 +113,10 @@ TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
   EXPECT_GT(j["sheet"]["self_intersections_smoothed"].get<long>(), j["sheet"]["self_intersections_cut"].get<long>());
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 1, 1);
-  EXPECT_LT(a["self_intersections"]["face_pairs"].get<long>(), j["sheet"]["self_intersections_found"].get<long>() / 20);
-  EXPECT_EQ(j["sheet"]["self_intersection_cut_rounds"], 3);
+  EXPECT_LT(a["self_intersections"]["face_pairs"].get<long>(), j["sheet"]["self_intersections_found"].get<long>() / 40);
+  EXPECT_GE(j["sheet"]["self_intersection_cut_rounds"].get<int>(), 2);
+  // The sheet's own count, from its checks of what each step moved or made, is the analyzer's.
+  EXPECT_EQ(j["sheet"]["self_intersections_left"], a["self_intersections"]["face_pairs"]);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.06);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.07);
 }
