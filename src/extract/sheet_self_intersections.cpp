@@ -6,8 +6,10 @@
 #include "envcrust/mesh_graph.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cstring>
-#include <functional>
+#include <utility>
 
 namespace envcrust::extract {
 

@@ -7,9 +7,8 @@
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/centroid.h>
-#include <CGAL/intersections.h>
-
 #include <CGAL/Random.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <atomic>
