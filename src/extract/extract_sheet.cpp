@@ -254,8 +254,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   if (options.self_intersection_cut_rel_rho > 0) {
     progress.report("sheet: self-intersections", 0.9);
     // Relaxed first: most folds open without losing faces; what is left is cut out and the
-    // holes closed with discs. A disc can pass through the sheet again, or a cut leave a
-    // crossing: the next round checks the sheet again, relaxes and cuts.
+    // holes closed with discs, in rounds (below).
     mesh::SelfIntersections found = mesh::self_intersections(sheet.mesh, 0);
     result.stats.self_intersections_found = found.face_pairs;
     if (found.face_pairs > 0) {
