@@ -21,7 +21,8 @@ struct Link {
 };
 
 // Links between ends of different open arcs, shortest first; a link may reach
-// max(limits.max_join, limits.max_join_local * the larger local spacing of its two ends).
+// max(limits.max_join, limits.max_join_local * the larger local spacing of its two ends,
+// limits.max_join_rel_arc * the shorter open length of its two arcs).
 std::vector<Link> candidate_links(const std::vector<Centreline>& lines, const std::vector<std::size_t>& open,
                                   const std::vector<Point3>& points, const PointIndex& index,
                                   const ArcJoinLimits& limits) {
@@ -36,7 +37,9 @@ std::vector<Link> candidate_links(const std::vector<Centreline>& lines, const st
     for (std::size_t f = e + 1; f < ends; ++f) {
       if (e / 2 == f / 2) continue;
       const double d = distance(end_point(lines, open, e), end_point(lines, open, f));
-      if (d < std::max(limits.max_join, limits.max_join_local * std::max(local[e], local[f]))) {
+      const double shorter = std::min(lines[open[e / 2]].open_length, lines[open[f / 2]].open_length);
+      if (d < std::max({limits.max_join, limits.max_join_local * std::max(local[e], local[f]),
+                        limits.max_join_rel_arc * shorter})) {
         links.push_back({d, e, f});
       }
     }
@@ -47,17 +50,20 @@ std::vector<Link> candidate_links(const std::vector<Centreline>& lines, const st
   return links;
 }
 
-// The cycle through arc `start` (an index into `open`) along `partner`: the ends in walking
-// order, each arc entered at the first end of its pair and left at the second.
-std::vector<std::size_t> walk_cycle(std::size_t start, const std::vector<std::size_t>& partner) {
+constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+// The arcs linked through `partner` from end `in` on: the ends in walking order, each arc
+// entered at the first end of its pair and left at the second; it stops back at `in` (a
+// cycle) or at an end with no partner (a chain, walked from one of its free ends).
+std::vector<std::size_t> walk_links(std::size_t in, const std::vector<std::size_t>& partner) {
   std::vector<std::size_t> ends;
-  std::size_t in = 2 * start;
+  const std::size_t first = in;
   do {
     const std::size_t out = in ^ 1U;
     ends.push_back(in);
     ends.push_back(out);
     in = partner[out];
-  } while (in != 2 * start);
+  } while (in != kNone && in != first);
   return ends;
 }
 
@@ -72,60 +78,72 @@ std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, st
   if (open.size() < 2) return 0;
   // Greedy matching of ends, shortest links first; `far[e]` is the free end at the other end
   // of e's chain, so a link between the two ends of one chain closes it into a cycle.
-  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   const std::size_t ends = 2 * open.size();
   std::vector<std::size_t> partner(ends, kNone), far(ends);
   std::vector<double> link_length(ends, 0.0);
   for (std::size_t e = 0; e < ends; ++e) far[e] = e ^ 1U;
-  std::vector<char> closed(open.size(), 0);
   for (const Link& link : candidate_links(lines, open, points, index, limits)) {
     if (partner[link.e] != kNone || partner[link.f] != kNone) continue;
     partner[link.e] = link.f;
     partner[link.f] = link.e;
     link_length[link.e] = link_length[link.f] = link.length;
-    if (far[link.e] == link.f) {
-      closed[link.e / 2] = 1;
-    } else {
+    if (far[link.e] != link.f) {
       const std::size_t x = far[link.e], y = far[link.f];
       far[x] = y;
       far[y] = x;
     }
   }
-  // Each closed cycle becomes one loop if its links are shorter in all than the closing gaps
-  // its arcs would have alone; open chains and rejected cycles leave their arcs as they were.
-  std::vector<char> absorbed(lines.size(), 0), done(open.size(), 0);
-  std::size_t made = 0;
-  for (std::size_t start = 0; start < open.size(); ++start) {
-    if (!closed[start]) continue;
-    const std::vector<std::size_t> cycle = walk_cycle(start, partner);
-    double links = 0.0, own_gaps = 0.0, longest = 0.0;
-    for (std::size_t k = 1; k < cycle.size(); k += 2) {
-      links += link_length[cycle[k]];
-      longest = std::max(longest, link_length[cycle[k]]);
-      own_gaps += lines[open[cycle[k] / 2]].end_gap;
+  // The groups of linked arcs: each cycle walked from its lowest end, each chain of two or
+  // more arcs from its lower free end. A group becomes one loop if its links, with the gap
+  // that closes a chain, are shorter in all than the closing gaps its arcs would have alone
+  // (a rim flagged in long pieces, as on a range scan's ragged edge, is one loop even when a
+  // join across a wide unflagged stretch is missing); other groups leave their arcs as they were.
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<char> seen(ends, 0);
+  for (const bool chains : {true, false}) {
+    for (std::size_t e = 0; e < ends; ++e) {
+      // A chain is walked from a free end whose arc is linked on at its other end; what is
+      // left once the chains are walked are cycles.
+      const bool starts = chains ? partner[e] == kNone && partner[e ^ 1U] != kNone : partner[e] != kNone;
+      if (seen[e] || !starts) continue;
+      groups.push_back(walk_links(e, partner));
+      for (const std::size_t x : groups.back()) seen[x] = 1;
     }
-    if (!(links < own_gaps)) continue;
+  }
+  std::vector<char> absorbed(lines.size(), 0);
+  std::size_t made = 0;
+  for (const std::vector<std::size_t>& group : groups) {
+    const bool is_cycle = partner[group.back()] == group.front();
+    double links = 0.0, own_gaps = 0.0, longest = 0.0;
+    for (std::size_t k = 1; k < group.size(); k += 2) {
+      own_gaps += lines[open[group[k] / 2]].end_gap;
+      if (partner[group[k]] == kNone) continue;
+      links += link_length[group[k]];
+      longest = std::max(longest, link_length[group[k]]);
+    }
+    const double closing = is_cycle ? 0.0 : distance(end_point(lines, open, group.front()),
+                                                     end_point(lines, open, group.back()));
+    if (!(links + closing < own_gaps)) continue;
     std::size_t first = lines.size();
-    for (std::size_t k = 0; k < cycle.size(); k += 2) first = std::min(first, open[cycle[k] / 2]);
+    for (std::size_t k = 0; k < group.size(); k += 2) first = std::min(first, open[group[k] / 2]);
     Polyline loop;
     std::vector<std::size_t> members;
-    for (std::size_t k = 0; k < cycle.size(); k += 2) {
-      const std::size_t arc = open[cycle[k] / 2];
+    for (std::size_t k = 0; k < group.size(); k += 2) {
+      const std::size_t arc = open[group[k] / 2];
       const Polyline& p = lines[arc].points;
-      if (cycle[k] % 2 == 0) {
+      if (group[k] % 2 == 0) {
         loop.insert(loop.end(), p.begin(), p.end());
       } else {
         loop.insert(loop.end(), p.rbegin(), p.rend());
       }
       members.insert(members.end(), components[arc].begin(), components[arc].end());
       if (arc != first) absorbed[arc] = 1;
-      done[cycle[k] / 2] = 1;
     }
     Centreline& line = lines[first];
     line.points = std::move(loop);
     line.end_gap = distance(line.points.back(), line.points.front());
     line.join_gap = longest;
-    line.joined_arcs = cycle.size() / 2;
+    line.joined_arcs = group.size() / 2;
     line.length = 0.0;
     for (std::size_t k = 0; k < line.points.size(); ++k) {
       line.length += distance(line.points[k], line.points[(k + 1) % line.points.size()]);

@@ -81,14 +81,15 @@ struct ArcJoinLimits {
   double min_arc = 0.0;         ///< shorter open arcs are not joined (false-candidate chains)
   double max_join = 0.0;        ///< a join may be this long anywhere ...
   double max_join_local = 0.0;  ///< ... or this many local spacings (6th-neighbour distance)
+  double max_join_rel_arc = 0.0;  ///< ... or this fraction of the shorter of its two arcs
 };
 
 /// Open arcs (ordered bands whose ends stay apart, such as the flagged pieces of a sparsely
 /// sampled rim or the two sides of a slot whose tight ends went unflagged) joined end to end
 /// into closed loops: ends matched greedily, shortest join first, each join within the
-/// limits; a cycle of arcs becomes one loop (merged into its first arc) if its joins are
-/// shorter in all than its arcs' own closing gaps. Returns the number of loops made
-/// (arc_joining.cpp).
+/// limits; a cycle of arcs, or a chain of them closed across the gap between its free ends,
+/// becomes one loop (merged into its first arc) if its joins and that gap are shorter in all
+/// than its arcs' own closing gaps. Returns the number of loops made (arc_joining.cpp).
 std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, std::vector<Centreline>& lines,
                            const std::vector<Point3>& points, const PointIndex& index, const ArcJoinLimits& limits);
 

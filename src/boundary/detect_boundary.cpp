@@ -33,6 +33,10 @@ constexpr double kMaxArcJoin = 10.0;
 // more sparsely than the average: the lion head's neck rim came in four arcs 2-4 local
 // spacings (11-19 s) apart.
 constexpr double kMaxArcJoinLocal = 5.0;
+// ... or as a fraction of the shorter of the two arcs: a range scan's ragged rim (the face
+// scan's) is flagged in arcs 90-480 s long, 10-13 s apart where it turns sharply; chains of
+// false candidates are too short to reach far.
+constexpr double kMaxArcJoinRelArc = 0.15;
 // Shortest arc joined, as a fraction of min_loop_length: false-candidate chains around random
 // voids reach 10 s at 50k points (two of them were joined into a false loop on the saddle).
 constexpr double kMinJoinedArc = 0.6;
@@ -320,7 +324,8 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points,
                          {.close_gap = options.close_distance * s,
                           .min_arc = kMinJoinedArc * options.min_loop_length * s,
                           .max_join = kMaxArcJoin * s,
-                          .max_join_local = kMaxArcJoinLocal});
+                          .max_join_local = kMaxArcJoinLocal,
+                          .max_join_rel_arc = kMaxArcJoinRelArc});
   build_curves(points, normals, index, candidates, options, components, lines, true, out);
   return out;
 }

@@ -114,5 +114,59 @@ TEST(JoinOpenArcs, LongerJoinsWhereTheRimIsSparse) {
   EXPECT_EQ(arcs.lines[0].joined_arcs, 2u);
 }
 
+// Or max_join_rel_arc times the shorter of its two arcs: a rim flagged in long pieces.
+TEST(JoinOpenArcs, LongerJoinsBetweenLongArcs) {
+  Arcs arcs;
+  const double gap = 0.6;
+  for (int h = 0; h < 2; ++h) arcs.add(0, 0, 1, h * M_PI + gap / 2, (h + 1) * M_PI - gap / 2, 0.05);
+  const boundary::detail::PointIndex index(arcs.points);
+  auto l = limits();  // joins of 0.59 > max_join 0.5; the arcs are 2.54 long
+  l.max_join_rel_arc = 0.2;  // 0.51: still nothing joined
+  auto copy = arcs;
+  EXPECT_EQ(boundary::detail::join_open_arcs(copy.components, copy.lines, copy.points, index, l), 0u);
+  l.max_join_rel_arc = 0.25;  // 0.64
+  EXPECT_EQ(boundary::detail::join_open_arcs(arcs.components, arcs.lines, arcs.points, index, l), 1u);
+  ASSERT_EQ(arcs.lines.size(), 1u);
+  EXPECT_EQ(arcs.lines[0].joined_arcs, 2u);
+}
+
+// A chain of arcs that no join closes is still one loop, closed across the gap between its
+// free ends, when its joins and that gap are shorter in all than the arcs' own closing gaps:
+// a unit circle flagged as four arcs, three gaps of 0.3 and one of 1.2 (beyond max_join).
+TEST(JoinOpenArcs, ChainClosedAcrossItsWidestGap) {
+  Arcs arcs;
+  const double small = 0.3, wide = 1.2;
+  double a = wide / 2;
+  for (int q = 0; q < 4; ++q) {
+    const double span = (2 * M_PI - wide - 3 * small) / 4;
+    arcs.add(0, 0, 1, a, a + span, 0.05, q == 1);
+    a += span + small;
+  }
+  const boundary::detail::PointIndex index(arcs.points);
+  EXPECT_EQ(boundary::detail::join_open_arcs(arcs.components, arcs.lines, arcs.points, index, limits()), 1u);
+  ASSERT_EQ(arcs.lines.size(), 1u);
+  const Centreline& loop = arcs.lines[0];
+  EXPECT_EQ(loop.joined_arcs, 4u);
+  EXPECT_NEAR(loop.join_gap, 2 * std::sin(small / 2), 1e-9);
+  EXPECT_NEAR(loop.end_gap, 2 * std::sin(wide / 2), 1e-9);
+  // Around the circle, with the wide gap's chord for its arc.
+  EXPECT_NEAR(loop.length, 2 * M_PI - wide + 2 * std::sin(wide / 2), 0.01);
+  EXPECT_EQ(arcs.components[0].size(), arcs.points.size());
+}
+
+// A chain whose free ends lie far apart stays apart: two half circles of radius 1, side by
+// side, whose near ends are 0.3 apart; joined, the loop would close across 4.3, more than
+// their own gaps of 2 each.
+TEST(JoinOpenArcs, ChainKeptApartWhenItsEndsAreFar) {
+  Arcs arcs;
+  arcs.add(0, 0, 1, 0.0, M_PI, 0.05);
+  arcs.add(2.3, 0, 1, M_PI, 2 * M_PI, 0.05);
+  const boundary::detail::PointIndex index(arcs.points);
+  EXPECT_EQ(boundary::detail::join_open_arcs(arcs.components, arcs.lines, arcs.points, index, limits()), 0u);
+  ASSERT_EQ(arcs.lines.size(), 2u);
+  EXPECT_EQ(arcs.lines[0].joined_arcs, 0u);
+  EXPECT_EQ(arcs.lines[1].joined_arcs, 0u);
+}
+
 }  // namespace
 }  // namespace envcrust

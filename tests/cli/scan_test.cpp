@@ -123,10 +123,9 @@ TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
 
 // The lion head as a point file (8,356 points whose spacing varies 20x): the detector
 // flags the sparse neck rim in four arcs, joined into one loop, and the rims of two densely
-// sampled patches, which are dropped (the sheet goes on beyond them). The automatic rho had
-// to be raised above half the reach to bridge the sparse parts, so the uniform run's handle
-// is suspect: the run is repeated with adaptive rho, which gives a disc (measured 4.4% and
-// 7.9% of the diagonal; earlier rounds 4.1% / 7.5% and 4.5% / 6.8%; the ears and the open
+// sampled patches, which are dropped (the sheet goes on beyond them). The uniform run gives a
+// disc (measured 4.9% and 7.0% of the diagonal; before, a retry with adaptive rho gave the
+// disc at 4.4% / 7.9%, earlier rounds 4.1% / 7.5% and 4.5% / 6.8%; the ears and the open
 // mouth are cut out as handles and closed).
 TEST_F(CliTest, issue_5_lion_head_points_are_a_disc_with_the_neck_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "cgal_lion_head";
@@ -134,10 +133,13 @@ TEST_F(CliTest, issue_5_lion_head_points_are_a_disc_with_the_neck_loop) {
   const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("lion.ply") +
                                    " --reference " + (folder / "lion-head.off").string() + " --json");
   EXPECT_EQ(j["input_boundary_curves"], 1);
-  const auto& retry = j["adaptive_retry"];
-  EXPECT_EQ(retry["max_genus"], nullptr);
-  EXPECT_EQ(retry["kept"], "adaptive");
-  EXPECT_EQ(retry["adaptive"]["defects"], 0);
+  // The uniform run is a disc since the rim's arcs are joined as a chain (2026-11-28); when
+  // a retry runs, the run kept has no defect left.
+  if (j.contains("adaptive_retry")) {
+    const auto& retry = j["adaptive_retry"];
+    EXPECT_EQ(retry["max_genus"], nullptr);
+    EXPECT_EQ(retry[retry["kept"].get<std::string>()]["defects"], 0);
+  }
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 1, 1);
   // The neck loop of the scan's own mesh is 2.18 long.
