@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -41,7 +42,24 @@ Progress terminal_progress(bool quiet) {
   return progress;
 }
 
-void print_json(const nlohmann::json& document) { std::cout << document.dump(2) << '\n'; }
+std::string json_text(const nlohmann::json& document) {
+  return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  std::vector<std::pair<std::string, std::filesystem::path>> seen;
+  for (const auto& [flag, path] : outputs) {
+    if (path.empty()) continue;
+    std::error_code ec;
+    std::filesystem::path resolved = std::filesystem::weakly_canonical(path, ec);
+    if (ec) resolved = std::filesystem::absolute(path).lexically_normal();
+    for (const auto& [other_flag, other] : seen)
+      if (other == resolved) throw UsageError(other_flag + " and " + flag + " name the same file '" + path + "'");
+    seen.emplace_back(flag, resolved);
+  }
+}
+
+void print_json(const nlohmann::json& document) { std::cout << json_text(document); }
 
 std::string percent(double fraction) {
   std::ostringstream out;
@@ -62,6 +80,19 @@ CLI::Validator whole_number_at_least(long long min) {
       "INT>=" + std::to_string(min));
 }
 
+CLI::Validator whole_number_in(long long min, long long max) {
+  const std::string range = std::to_string(min) + ".." + std::to_string(max);
+  return CLI::Validator(
+      [min, max, range](std::string& text) -> std::string {
+        long long value = 0;
+        const char* end = text.data() + text.size();
+        const auto [at, error] = std::from_chars(text.data(), end, value);
+        if (error == std::errc() && at == end && value >= min && value <= max) return "";
+        return "must be a whole number in " + range + " (got '" + text + "')";
+      },
+      "INT in " + range);
+}
+
 CLI::Validator number_above(double min, bool inclusive) {
   std::ostringstream bound;
   bound << (inclusive ? ">= " : "> ") << min;
@@ -74,6 +105,21 @@ CLI::Validator number_above(double min, bool inclusive) {
         return "must be a number " + bound + " (got '" + text + "')";
       },
       "NUMBER" + bound.str());
+}
+
+CLI::Validator number_in(double min, double max, bool min_inclusive, bool max_inclusive) {
+  std::ostringstream range;
+  range << (min_inclusive ? '[' : '(') << min << ", " << max << (max_inclusive ? ']' : ')');
+  return CLI::Validator(
+      [=, range = range.str()](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool parsed = !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+        if (parsed && (min_inclusive ? value >= min : value > min) && (max_inclusive ? value <= max : value < max))
+          return "";
+        return "must be a number in " + range + " (got '" + text + "')";
+      },
+      "FLOAT in " + range.str());
 }
 
 }  // namespace envcrust::cli

@@ -22,7 +22,16 @@ void add_common_flags(CLI::App& command, CommonFlags& flags);
 /// A Progress that draws a one-line bar on stderr when stderr is a terminal and not quiet.
 Progress terminal_progress(bool quiet);
 
-/// Print a JSON document on stdout (2-space indent, trailing newline).
+/// The document as indented JSON text ending in a newline; invalid UTF-8 in strings (file
+/// names are bytes) is replaced rather than refused.
+std::string json_text(const nlohmann::json& document);
+
+/// Refuses two outputs of one run that name the same file ("-o and --envelope-out name the
+/// same file 'out.ply'"): the later one would silently replace the earlier. Pairs of (flag,
+/// path); empty paths are not written and skipped. @throws UsageError
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
+
+/// Print a JSON document on stdout (json_text).
 void print_json(const nlohmann::json& document);
 
 /// "1.23%" style formatting of a fraction.
@@ -33,9 +42,20 @@ std::string percent(double fraction);
 /// unsigned option wraps around to a huge count).
 CLI::Validator whole_number_at_least(long long min);
 
+/// The same with an upper bound: "must be a whole number in 1..100000000 (got '1e12')".
+CLI::Validator whole_number_in(long long min, long long max);
+
+/// Most points a command draws or measures with (-n, --samples): 1e8 points with normals
+/// take 4.8 GB before any stage runs; more fail to allocate on common machines.
+inline constexpr long long kMaxPointCount = 100'000'000;
+
 /// Check of a real option: a finite number above `min` (or at least `min` when `inclusive`),
 /// else "must be a number > 0 (got '-1')" (CLI11's own checks print the whole double range).
 CLI::Validator number_above(double min, bool inclusive = false);
+
+/// Check of a real option in a range: a finite number between `min` and `max`, each bound
+/// included or not, else "must be a number in (0, 4] (got 'nan')" (CLI11's Range lets NaN by).
+CLI::Validator number_in(double min, double max, bool min_inclusive, bool max_inclusive);
 
 /// Usage error raised by a subcommand after parsing (exit code 2, like CLI11's own errors).
 class UsageError : public std::runtime_error {

@@ -35,7 +35,7 @@ void run_curve(const AnalyzeCommand& cmd) {
     }
   }();
   nlohmann::json j = {{"curve", cmd.curve}, {"vertices", curve.size()}, {"knot", knot_json(knot)}};
-  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
+  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, json_text(j));
   if (cmd.common.json) {
     print_json(j);
   } else if (!cmd.common.quiet) {
@@ -63,7 +63,7 @@ void run_analyze(AnalyzeCommand& cmd) {
   nlohmann::json j = analysis_json(report);
   j["mesh"] = cmd.mesh;
   if (!cmd.reference.empty()) j["reference"] = cmd.reference;
-  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
+  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, json_text(j));
   if (cmd.common.json) {
     print_json(j);
   } else if (!cmd.common.quiet) {
@@ -88,7 +88,7 @@ void register_analyze(CLI::App& app) {
   sub->add_option("--samples", cmd->options.distance.samples,
                   "Area samples per side for distance measurement")
       ->capture_default_str()
-      ->check(whole_number_at_least(0));
+      ->check(whole_number_in(0, kMaxPointCount));
   sub->add_option("--seed", cmd->options.distance.seed, "Seed of the distance sampling")->capture_default_str();
   sub->add_option("--knot-seed", cmd->options.knot.seed, "Seed of the knot projections")->capture_default_str();
   sub->add_option("--projections", cmd->options.knot.projections,

@@ -109,6 +109,14 @@ void run_experiments(ExperimentCommand& cmd) {
     if (!is_known) throw UsageError("unknown experiment '" + cmd.name + "' (known: " + known + "all)");
     names.push_back(cmd.name);
   }
+  // The folder is made first: a name taken by a file fails now, not after the first experiment.
+  {
+    std::error_code ec;
+    std::filesystem::create_directories(cmd.output, ec);
+    if (!std::filesystem::is_directory(cmd.output))
+      throw IoError(cmd.output + ": cannot make the output folder (" +
+                    (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  }
   const bool quiet = cmd.common.quiet || cmd.common.json;
   cmd.options.progress = terminal_progress(quiet);
   if (std::find(names.begin(), names.end(), "scan") != names.end()) cmd.options.scan = load_scan(cmd);
@@ -132,7 +140,7 @@ void run_experiments(ExperimentCommand& cmd) {
     const double render_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
     const auto json = result_json(result, render_seconds);
-    io::write_text(dir / "results.json", json.dump(2) + "\n");
+    io::write_text(dir / "results.json", json_text(json));
     io::write_text(dir / "results.md", markdown);
     all.push_back(json);
     index += experiments::to_markdown(result);

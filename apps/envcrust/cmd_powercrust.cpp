@@ -46,6 +46,7 @@ void run_powercrust(PowerCrustCommand& cmd) {
   io::check_output_path(cmd.output, io::OutputKind::Mesh);
   if (!cmd.medial_axis_output.empty()) io::check_output_path(cmd.medial_axis_output, io::OutputKind::Mesh);
   if (!cmd.poles_output.empty()) io::check_output_path(cmd.poles_output, io::OutputKind::Text);
+  check_distinct_outputs({{"-o", cmd.output}, {"--medial-axis", cmd.medial_axis_output}, {"--poles", cmd.poles_output}});
   cmd.options.resolve_unknown = !cmd.keep_unknown;
   cmd.options.build_power_shape = !cmd.medial_axis_output.empty();
   const auto points = load_points(cmd);
@@ -55,6 +56,8 @@ void run_powercrust(PowerCrustCommand& cmd) {
       return powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
     } catch (const DegenerateInput& e) {
       throw DegenerateInput(cmd.input + ": " + e.what());
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(cmd.input + ": " + e.what());
     }
   }();
   io::write_mesh(cmd.output, result.crust);
@@ -122,7 +125,7 @@ void register_powercrust(CLI::App& app) {
                   "other name as text lines 'x y z radius in|out|unknown' (both read by render --balls)");
   sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME inputs")
       ->capture_default_str()
-      ->check(whole_number_at_least(1));
+      ->check(whole_number_in(1, kMaxPointCount));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();
   const std::map<std::string, powercrust::LabelPreset> presets = {{"code", powercrust::LabelPreset::Code},
                                                                   {"readme", powercrust::LabelPreset::Readme}};
@@ -130,27 +133,32 @@ void register_powercrust(CLI::App& app) {
                   "Labeling thresholds: 'code' (0/0, what the original program runs) or 'readme' (0.4/0.3 and --sampling-estimate 0.6, what its README gives)")
       ->transform(CLI::CheckedTransformer(presets, CLI::ignore_case));
   sub->add_option("--neighbor-threshold", cmd->options.neighbor_threshold,
-                  "Neighbour-rule threshold on the ball intersection angle (original -t), overrides the preset");
+                  "Neighbour-rule threshold on the ball intersection angle (original -t), overrides the preset")
+      ->check(number_in(-1, 1, true, true));
   sub->add_option("--second-pass-threshold", cmd->options.second_pass_threshold,
-                  "Second-pass threshold (original -w), overrides the preset");
+                  "Second-pass threshold (original -w), overrides the preset")
+      ->check(number_in(-1, 1, true, true));
   sub->add_option("--box-scale", cmd->options.bounding_box_scale,
-                  "Half-width of the bounding cube in largest extents of the input")->capture_default_str();
+                  "Half-width of the bounding cube in largest extents of the input")
+      ->capture_default_str()
+      ->check(number_in(1, 1000, false, true));
   sub->add_option("--pole-joggle", cmd->options.pole_joggle,
                   "Move each pole by up to this fraction of the smaller of its radius and the input's box diagonal "
                   "(deterministic) before the power diagram, so exact samples (sphere, torus) do not put the poles "
                   "in degenerate position; 0: off")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 0.01, true, true));
   sub->add_option("--min-pole-radius", cmd->options.min_pole_radius_rel_spacing,
                   "Noisy input: leave out poles whose radius is below this many local sample spacings (median "
                   "nearest-neighbour distance around the sample), which noise makes and the labeling gets wrong "
                   "(handles, bubbles); 3 suits 0.1% noise; 0: off, as the original")
-      ->check(number_above(0, true))
+      ->check(number_in(0, 100, true, true))
       ->capture_default_str();
   sub->add_option("--sampling-estimate", cmd->options.sampling_estimate,
                   "The original's -R r (the input an r-sample): a second pole nearer to its sample than the "
                   "local-feature-size bound the Voronoi vertices near the tangent plane give is left out and not "
                   "paired (default: 1 = off, as the original runs; 0.6 with --preset readme)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0, 1, false, true));
   sub->add_flag("--drop-bad-pole-pairs", cmd->options.drop_both_bad_poles,
                 "With --sampling-estimate below 1: a sample with a bad second pole loses its first pole too "
                 "(the original's -B)");

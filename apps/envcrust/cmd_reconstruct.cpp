@@ -56,7 +56,7 @@ std::optional<double> parse_rho(const std::string& text) {
   try {
     std::size_t used = 0;
     const double value = std::stod(text, &used);
-    if (used == text.size() && value > 0) return value;
+    if (used == text.size() && value > 0 && std::isfinite(value)) return value;
   } catch (const std::exception&) {
   }
   throw UsageError("--rho must be 'auto' or a positive number (got '" + text + "')");
@@ -73,14 +73,18 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "Automatic rho is at least this quantile of the samples' 8th-neighbour distances / 2.5 "
                  "(0: half the reach only)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0, 1, true, true));
   sub.add_option("--spacing", cmd.options.envelope.spacing_rel_rho,
-                 "Envelope sample spacing as a fraction of rho")->capture_default_str();
+                 "Envelope sample spacing as a fraction of rho")
+      ->capture_default_str()
+      ->check(number_in(0, 4, false, true));
   sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME inputs")
       ->capture_default_str()
-      ->check(whole_number_at_least(1));
+      ->check(whole_number_in(1, kMaxPointCount));
   sub.add_option("--noise", cmd.sampling.noise_rel_diag,
-                 "Gaussian noise on builtin:NAME samples, fraction of the diagonal")->capture_default_str();
+                 "Gaussian noise on builtin:NAME samples, fraction of the diagonal")
+      ->capture_default_str()
+      ->check(number_above(0, true));
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
   auto* no_boundary = sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
                                    "Point files: do not detect boundary curves (a closed surface)");
@@ -103,11 +107,17 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                "[--rho-min-rel * rho, rho] (rho = --rho), Lipschitz --rho-lipschitz, and raised where the "
                "samples are sparse to bridge their local gaps");
   sub.add_option("--rho-alpha", cmd.options.envelope.adaptive_rho_rel_lfs,
-                 "Adaptive rho: rho(p) = alpha * local reach")->capture_default_str();
+                 "Adaptive rho: rho(p) = alpha * local reach")
+      ->capture_default_str()
+      ->check(number_in(0, 1, false, false));
   sub.add_option("--rho-min-rel", cmd.options.envelope.adaptive_min_rel_rho,
-                 "Adaptive rho: smallest rho as a fraction of rho")->capture_default_str();
+                 "Adaptive rho: smallest rho as a fraction of rho")
+      ->capture_default_str()
+      ->check(number_in(0, 1, false, true));
   sub.add_option("--rho-lipschitz", cmd.options.envelope.adaptive_lipschitz,
-                 "Adaptive rho: Lipschitz constant along M")->capture_default_str();
+                 "Adaptive rho: Lipschitz constant along M")
+      ->capture_default_str()
+      ->check(number_in(0, 1, true, false));
   sub.add_flag("--rho-shrink-only", [&cmd](std::int64_t) { cmd.options.envelope.adaptive_gap_floor = false; },
                "Adaptive rho: only shrink with the local feature size (by default it also grows where the "
                "samples are sparse, to bridge their local gaps, also beyond --rho)");
@@ -259,12 +269,56 @@ nlohmann::json defects_json(const pipeline::RunDefects& d, const std::optional<l
           {"defects", d.genus ? nlohmann::json(d.count(max_genus)) : nlohmann::json(nullptr)}};
 }
 
+// Runs a stage on the input, naming the input in what it refuses (unless the message does).
+template <class Stage>
+auto naming_input(const std::string& spec, Stage&& stage) {
+  auto named = [&](const std::string& what) { return what.rfind(spec + ":", 0) == 0 ? what : spec + ": " + what; };
+  try {
+    return stage();
+  } catch (const DegenerateInput& e) {
+    throw DegenerateInput(named(e.what()));
+  } catch (const NumericalFailure& e) {
+    throw NumericalFailure(named(e.what()));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(named(e.what()));
+  }
+}
+
+// Why a run came out empty, for its error: rho too small for the input's gaps, the input too
+// sparse for its size, or rho too large for it. Starts with the input's name and `what`.
+std::string empty_result_reason(const ReconstructCommand& cmd, const LoadedSurface& loaded,
+                                const envelope::EnvelopeSamples& e, const std::string& what) {
+  std::ostringstream reason;
+  reason << cmd.input << ": " << what;
+  if (cmd.options.method == pipeline::Method::Envelope && e.rho < e.min_rho_for_gaps)
+    reason << ": rho " << e.rho << " is too small for the input's gaps (up to " << e.input_coverage
+           << "); use --rho " << e.min_rho_for_gaps << " or more, or input with gaps below "
+           << e.input_coverage * e.rho / e.min_rho_for_gaps;
+  else if (cmd.options.method == pipeline::Method::Envelope && e.is_input_too_sparse)
+    reason << ": the input is too sparse or noisy for its size (rho " << e.rho
+           << " is " << std::setprecision(3) << 100.0 * e.rho / mesh::bbox_diagonal(loaded.samples.points)
+           << "% of its diagonal); sample it denser";
+  else if (const double diagonal = mesh::bbox_diagonal(loaded.samples.points);
+           cmd.options.method == pipeline::Method::Envelope && e.rho > 0.25 * diagonal)
+    reason << ": rho " << e.rho << " is more than a quarter of the input's size (diagonal " << diagonal
+           << "), so its envelope is one blob around it with no sheets to take apart; use a rho below "
+           << 0.1 * diagonal << " (or leave --rho out: auto)";
+  else if (cmd.options.method == pipeline::Method::Envelope)
+    reason << ": no piece of the medial sheet held together (rho " << e.rho << ", " << e.samples.size()
+           << " envelope samples from " << loaded.samples.points.size() << " input points); try denser input";
+  return reason.str();
+}
+
 // Outputs checked before the run, not after minutes of it: known extensions, existing folders.
 void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   io::check_output_path(cmd.output, output_kind);
   if (!cmd.envelope_output.empty()) io::check_output_path(cmd.envelope_output, io::OutputKind::Points);
   if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Points);
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
+  check_distinct_outputs({{"-o", cmd.output},
+                          {"--envelope-out", cmd.envelope_output},
+                          {"--boundary-out", cmd.boundary_output},
+                          {"--report", cmd.report_file}});
 }
 
 void run_reconstruct(ReconstructCommand& cmd) {
@@ -276,37 +330,13 @@ void run_reconstruct(ReconstructCommand& cmd) {
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
   choose_input_options(cmd, loaded);
-  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
-  auto result = pipeline::reconstruct(loaded.samples, cmd.options, progress);
+  // A reference that cannot be read fails now, not after the run.
+  std::optional<analysis::Reference> given_reference;
+  if (!cmd.reference.empty() && !cmd.no_analysis) given_reference = load_reference(cmd.reference);
+  auto result = naming_input(cmd.input, [&] { return pipeline::reconstruct(loaded.samples, cmd.options, progress); });
   const auto& retry = result.adaptive_retry;
-  if (result.mesh.triangles.empty()) {
-    const auto& e = result.envelope;
-    std::ostringstream reason;
-    reason << cmd.input << ": the reconstruction is empty";
-    if (cmd.options.method == pipeline::Method::Envelope && e.rho < e.min_rho_for_gaps)
-      reason << ": rho " << e.rho << " is too small for the input's gaps (up to " << e.input_coverage
-             << "); use --rho " << e.min_rho_for_gaps << " or more, or input with gaps below "
-             << e.input_coverage * e.rho / e.min_rho_for_gaps;
-    else if (cmd.options.method == pipeline::Method::Envelope && e.is_input_too_sparse)
-      reason << ": the input is too sparse or noisy for its size (rho " << e.rho
-             << " is " << std::setprecision(3) << 100.0 * e.rho / mesh::bbox_diagonal(loaded.samples.points)
-             << "% of its diagonal); sample it denser";
-    else if (const double diagonal = mesh::bbox_diagonal(loaded.samples.points);
-             cmd.options.method == pipeline::Method::Envelope && e.rho > 0.25 * diagonal)
-      reason << ": rho " << e.rho << " is more than a quarter of the input's size (diagonal " << diagonal
-             << "), so its envelope is one blob around it with no sheets to take apart; use a rho below "
-             << 0.1 * diagonal << " (or leave --rho out: auto)";
-    throw NumericalFailure(reason.str());
-  }
-  io::write_mesh(cmd.output, result.mesh);
-  if (!cmd.envelope_output.empty()) {
-    PointSet env;
-    for (const auto& s : result.envelope.samples) {
-      env.points.push_back(s.position);
-      env.normals.push_back(s.direction);
-    }
-    io::write_points(cmd.envelope_output, env);
-  }
+  if (result.mesh.triangles.empty())
+    throw NumericalFailure(empty_result_reason(cmd, loaded, result.envelope, "the reconstruction is empty"));
   nlohmann::json j = {{"input", cmd.input}, {"output", cmd.output}, {"source", loaded.source},
                       {"input_points", loaded.samples.points.size()},
                       {"input_boundary_curves", loaded.samples.boundary.size()},
@@ -383,8 +413,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
     // The truth when known: the exact surface of a built-in, a mesh input's own surface (its
     // vertices alone would count the triangles' size as error); else the input points.
     analysis::Reference reference;
-    if (!cmd.reference.empty()) {
-      reference = load_reference(cmd.reference);
+    if (given_reference) {
+      reference = std::move(*given_reference);
       j["reference"] = cmd.reference;
     } else if (is_builtin_spec(cmd.input) || loaded.source == "mesh") {
       reference = load_reference(cmd.input);
@@ -421,7 +451,19 @@ void run_reconstruct(ReconstructCommand& cmd) {
   j["warnings"] = warnings;
   const std::vector<std::string> hints = report ? scan_hints(loaded, cmd, *report) : std::vector<std::string>{};
   j["hints"] = hints;
-  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, j.dump(2) + "\n");
+  // Every output is written once nothing can fail any more, so a failed run leaves none.
+  const std::string report_text = json_text(j);
+  io::write_mesh(cmd.output, result.mesh);
+  if (!cmd.envelope_output.empty()) {
+    PointSet env;
+    for (const auto& s : result.envelope.samples) {
+      env.points.push_back(s.position);
+      env.normals.push_back(s.direction);
+    }
+    io::write_points(cmd.envelope_output, env);
+  }
+  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
+  if (!cmd.report_file.empty()) io::write_text(cmd.report_file, report_text);
   if (cmd.common.json) {
     print_json(j);
     return;
@@ -476,10 +518,11 @@ void run_envelope(ReconstructCommand& cmd) {
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
   cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);  // the envelope's settings
-  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   progress.report("envelope", 0.0);
-  const auto env = envelope::sample_envelope(loaded.samples, cmd.options.envelope);
+  const auto env = naming_input(cmd.input, [&] { return envelope::sample_envelope(loaded.samples, cmd.options.envelope); });
   progress.report("envelope", 1.0);
+  if (env.samples.empty()) throw NumericalFailure(empty_result_reason(cmd, loaded, env, "the envelope has no samples"));
+  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
   PointSet points;
   for (const auto& s : env.samples) {
     points.points.push_back(s.position);
@@ -555,11 +598,15 @@ void register_reconstruct(CLI::App& app) {
                 "Collapse the short edges, then remesh the result isotropically (keeps topology and boundary; a Moebius band is cut along a seam and welded back)");
   sub->add_option_function<double>(
          "--remesh-edge", [cmd](double length) { cmd->remesh.target_edge_length = length; },
-         "With --remesh: target edge length (default: --remesh-edge-rel-median x the median edge)");
+         "With --remesh: target edge length (default: --remesh-edge-rel-median x the median edge)")
+      ->check(number_above(0));
   sub->add_option("--remesh-edge-rel-median", cmd->remesh.edge_length_rel_median,
-                  "With --remesh: target edge length as a multiple of the median edge")->capture_default_str();
+                  "With --remesh: target edge length as a multiple of the median edge")
+      ->capture_default_str()
+      ->check(number_above(0));
   sub->add_option("--remesh-iterations", cmd->remesh.iterations, "With --remesh: remeshing rounds")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(whole_number_in(1, 100));
   const std::map<std::string, remesh::BoundaryMode> boundary_modes = {{"resample", remesh::BoundaryMode::Resample},
                                                                       {"keep", remesh::BoundaryMode::Keep}};
   sub->add_option("--remesh-boundary", cmd->remesh.boundary,

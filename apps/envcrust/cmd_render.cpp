@@ -293,7 +293,8 @@ void register_render(CLI::App& app) {
   sub->add_option("--size", cmd->size, "Pixels of each panel, WIDTHxHEIGHT")->capture_default_str();
   sub->add_option("--view", cmd->view, "iso, front, top, or AZIMUTH,ELEVATION in degrees")->capture_default_str();
   sub->add_option("--supersampling", cmd->options.supersampling, "Rays per pixel along each axis (1-4)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(whole_number_in(1, 4));
   sub->add_flag("--flat", cmd->is_flat, "Flat shading (one normal per triangle) instead of smooth");
   sub->add_flag("--wireframe", cmd->use_wireframe, "Darken triangle edges");
   sub->add_option("--front-color", cmd->front_color, "Colour of front faces, #rrggbb (default grey-blue)");
@@ -315,13 +316,17 @@ void register_render(CLI::App& app) {
   sub->add_option("--ball-labels", cmd->ball_labels, "Which labelled balls to draw: in, out or all (unlabelled: always)")
       ->transform(CLI::CheckedTransformer(labels, CLI::ignore_case))
       ->default_str("in");
-  sub->add_option("--ball-opacity", cmd->ball_opacity, "Opacity of the balls, (0, 1]")->capture_default_str();
+  sub->add_option("--ball-opacity", cmd->ball_opacity, "Opacity of the balls, (0, 1]")
+      ->capture_default_str()
+      ->check(number_in(0, 1, false, true));
   sub->add_option("--grid", cmd->grid, "Panels in ROWS COLUMNS (default: one row)")->expected(2);
   sub->add_option("--title", cmd->title, "Title above the panels");
   sub->add_option("--caption", cmd->captions, "Caption of each panel, one per input (default: the file name)");
   sub->add_option("--font", cmd->font, "TrueType font for captions (missing: captions left out, with a warning)")
       ->capture_default_str();
-  sub->add_option("--font-size", cmd->font_px, "Caption height in pixels")->capture_default_str();
+  sub->add_option("--font-size", cmd->font_px, "Caption height in pixels")
+      ->capture_default_str()
+      ->check(whole_number_in(4, 512));
   sub->add_option("--error-to", cmd->error_reference,
                   "Colour the meshes by the distance of each vertex to this reference (a mesh, builtin:NAME's exact "
                   "surface, or a point file): blue 0 to red at --error-max; the title gives the scale");

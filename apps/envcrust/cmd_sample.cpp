@@ -65,7 +65,8 @@ void run_sample(const SampleCommand& cmd) {
   if (cmd.output.empty() && cmd.boundary_output.empty())
     throw UsageError("sample: an output file is required (-o OUT)");
   if (!cmd.output.empty()) io::check_output_path(cmd.output, cmd.mesh ? io::OutputKind::Mesh : io::OutputKind::Points);
-  if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Text);
+  if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Polyline);
+  check_distinct_outputs({{"-o", cmd.output}, {"--boundary-out", cmd.boundary_output}});
   const auto surface = surfaces::make_builtin(cmd.surface);
   nlohmann::json report = {{"surface", cmd.surface}};
   if (!cmd.output.empty()) {
@@ -125,7 +126,7 @@ void register_sample(CLI::App& app) {
   sub->add_option("-o,--output", cmd->output, "Output file (.xyz/.ply points; .ply/.off/.obj with --mesh)");
   auto* count = sub->add_option("-n,--count", cmd->sampling.count, "Number of points")
                     ->capture_default_str()
-                    ->check(whole_number_at_least(1));
+                    ->check(whole_number_in(1, kMaxPointCount));
   auto* noise = sub->add_option("--noise", cmd->sampling.noise_rel_diag,
                                 "Gaussian noise sigma as a fraction of the bounding-box diagonal (0.0025 = 0.25%)")
                     ->capture_default_str();

@@ -58,6 +58,10 @@ analysis::Reference load_reference(const std::string& spec) {
     if (loops.size() <= kMaxReferenceLoops)
       for (const auto& loop : loops) reference.boundary.push_back(loop.polyline(reference.mesh->vertices));
   }
+  // Distances are reported against the reference's size: it needs one.
+  const auto& points = reference.mesh ? reference.mesh->vertices : reference.points;
+  if (!(mesh::bbox_diagonal(points) > 0))
+    throw InvalidInput(spec + ": the reference is a single point (its bounding box has no size to measure against)");
   return reference;
 }
 

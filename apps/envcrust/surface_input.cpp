@@ -13,7 +13,9 @@
 #include "envcrust/topology.h"
 
 #include <cmath>
+#include <iomanip>
 #include <optional>
+#include <sstream>
 #include <utility>
 
 namespace envcrust::cli {
@@ -23,6 +25,11 @@ namespace {
 // faces carry the surface between vertices), and the mesh's border loops with frames.
 void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface& out) {
   if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
+  try {
+    mesh::check_coordinates(mesh.vertices);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(spec + ": vertex" + std::string(e.what()).substr(std::string("point").size()));
+  }
   out.source = "mesh";
   out.kind.is_builtin = false;
   if (const std::size_t dropped = mesh::remove_duplicate_faces(mesh); dropped > 0)
@@ -92,7 +99,12 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
       throw InvalidInput(spec + ": point " + std::to_string(i + 1) + " has a zero normal");
     read.normals[i] = read.normals[i] / length;
   }
-  mesh::MergedPoints merged = mesh::merge_duplicate_points(read.points);
+  mesh::MergedPoints merged;
+  try {
+    merged = mesh::merge_duplicate_points(read.points);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(spec + ": " + e.what());
+  }
   PointSet out;
   out.points = std::move(merged.points);
   if (read.has_normals()) {
@@ -107,8 +119,13 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
                           (merged.duplicates > 0 ? " (" + std::to_string(merged.duplicates) + " duplicates merged)" : ""));
   // Within 1e-5 of their size of a line (6 printed significant digits leave a line within
   // about 1.5e-6 of it): a curve.
-  if (mesh::spread_dimension(out.points, 1e-5 * mesh::bbox_diagonal(out.points)) < 2)
-    throw DegenerateInput(spec + ": all " + std::to_string(n) + " points lie on a line: no surface to reconstruct");
+  const double diagonal = mesh::bbox_diagonal(out.points);
+  if (mesh::spread_dimension(out.points, 1e-5 * diagonal) < 2) {
+    std::ostringstream s;
+    s << std::setprecision(3) << spec << ": all " << n << " points lie on a line (within 1e-5 of their extent, "
+      << diagonal << "): no surface to reconstruct";
+    throw DegenerateInput(s.str());
+  }
   return out;
 }
 

@@ -65,12 +65,13 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 enum class OutputKind {
   Mesh,    ///< write_mesh: .ply, .off, .obj
   Points,  ///< write_points: .xyz, .ply
-  Image,   ///< write_png: .png
-  Text     ///< write_text, write_polyline: any name
+  Image,     ///< write_png: .png
+  Polyline,  ///< write_polyline: .polyline, .xyz
+  Text       ///< write_text: any name
 };
 
 /// Check before a long run that `path` can be written as `kind`: a file name with a known
-/// extension, in a folder that exists. @throws IoError naming the file ("x.unknown: unknown
+/// extension, in a folder that exists, not itself a folder ("out: is a folder, not a file"). @throws IoError naming the file ("x.unknown: unknown
 /// extension '.unknown' (expected .ply, .off, .obj)", "out/x.ply: folder 'out' does not exist").
 void check_output_path(const std::filesystem::path& path, OutputKind kind);
 

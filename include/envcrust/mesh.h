@@ -18,9 +18,28 @@ struct MergedPoints {
   std::size_t duplicates = 0;  ///< input points dropped as exact copies of an earlier one
 };
 
+/// Largest coordinate magnitude the geometry accepts: the power tests of the Power Crust
+/// square squared weights (radius^4), which overflow a double near 1e77 (a sphere of radius
+/// 1e80 crashed CGAL's regular triangulation; 1e60 still worked).
+inline constexpr double kMaxCoordinate = 1e30;
+/// Smallest extent (bounding-box diagonal) accepted, for the same reason at the other end:
+/// fourth powers of 1e-80 underflow (a sphere of radius 1e-150 left one pole).
+inline constexpr double kMinExtent = 1e-30;
+/// Smallest extent accepted as a fraction of the largest coordinate magnitude: a unit
+/// sphere moved 1e12 from the origin keeps 4 significant digits, and its Power Crust had
+/// degenerate faces and passed through itself.
+inline constexpr double kMinExtentRelMagnitude = 1e-9;
+
+/// Refuses points the geometry cannot handle (InvalidInput): a non-finite coordinate ("point
+/// 12 has a non-finite coordinate"), one beyond kMaxCoordinate in magnitude ("point 12 (from
+/// 0) has a coordinate of magnitude 1e+100, beyond 1e+30: scale the input down"), or points
+/// spanning less than kMinExtent, or less than kMinExtentRelMagnitude of their coordinates
+/// ("... move the input near the origin"). Points that are all equal pass (counted later).
+void check_coordinates(const std::vector<Point3>& points);
+
 /// Merge exact duplicates: each group of equal points is represented by its first occurrence.
 /// Deterministic whatever the thread schedule.
-/// @throws InvalidInput on a non-finite coordinate ("point 12 has a non-finite coordinate").
+/// @throws InvalidInput on a coordinate check_coordinates refuses.
 MergedPoints merge_duplicate_points(const std::vector<Point3>& points);
 
 /// How many independent directions the points spread in by more than `tolerance` (0 to 3):

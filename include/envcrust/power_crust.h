@@ -29,7 +29,9 @@ enum class LabelPreset { Code, Readme };
 /// resolve_unknown is on (the original leaves Unknown poles, which can open the crust).
 struct PowerCrustOptions {
   /// Half-width of the bounding cube of the 8 extra points, in units of the largest extent
-  /// of the input's bounding box (METHOD 4.2). Range > 1.
+  /// of the input's bounding box (METHOD 4.2). Range (1, 1000]: farther corners make the
+  /// poles of the hull samples so large that their power tests lose the input's detail (at
+  /// 1e12 a sphere's crust passed through itself).
   double bounding_box_scale = 4.0;
   /// Neighbour-rule threshold on w_pq (original -t). Range [-1, 1]. Set by `preset`
   /// unless overridden.

@@ -39,6 +39,11 @@ struct RemeshOptions {
   /// Split / collapse / flip / relax / project rounds, 1..100. CGAL's example uses 3.
   int iterations = 3;
   BoundaryMode boundary = BoundaryMode::Resample;
+  /// Remeshing that would make more faces than this many times the input's (or 1M, whichever
+  /// is more), counted as the area over an equilateral triangle of the target edge, is
+  /// skipped with a warning: a tiny target would run for hours and fill the memory (a target
+  /// of 0.001 on a unit hemisphere, 14M faces, passed 4 GB within 2 minutes). >= 1.
+  double max_face_growth = 4.0;
 };
 
 /// What remesh did.

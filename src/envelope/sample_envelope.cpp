@@ -187,10 +187,18 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   // The rims' candidates grow as the curves' length over rho (the sheets' are at most 128
   // per input sample): refuse a rho they could not be stored for, before making them.
   if (const double rims = rim_candidate_count(surface.boundary, rim_rho, options.spacing_rel_rho, kRimStepRelH);
-      rims > kMaxRimCandidates)
-    throw DegenerateInput("rho " + format(out.rho) + " is too small for the boundary curves: their half-tubes would "
-                          "take " + format(rims) + " envelope candidates (at most " + format(kMaxRimCandidates) +
-                          "); use rho >= " + format(out.rho * rims / kMaxRimCandidates) + " or more");
+      rims > kMaxRimCandidates) {
+    // The count grows as 1 / (spacing^2 rho): a larger rho makes room, and so does a larger
+    // spacing where it was set below the default (above it the envelope thins out). The
+    // rounding of the tube's steps makes the spacing's share a few % less than its square.
+    const double spacing_needed = 1.05 * options.spacing_rel_rho * std::sqrt(rims / kMaxRimCandidates);
+    const bool spacing_helps = spacing_needed <= EnvelopeOptions{}.spacing_rel_rho;
+    throw DegenerateInput("rho " + format(out.rho) + " at a sample spacing of " + format(options.spacing_rel_rho) +
+                          " rho is too small for the boundary curves: their half-tubes would take " + format(rims) +
+                          " envelope candidates (at most " + format(kMaxRimCandidates) + "); " +
+                          (spacing_helps ? "a spacing of " + format(spacing_needed) + " rho or more, or " : "") +
+                          "rho >= " + format(out.rho * rims / kMaxRimCandidates) + " would fit");
+  }
   std::vector<EnvelopeSample> candidates = sheet_candidates(surface, rho, options.spacing_rel_rho, kCandidatesPerH2,
                                                             options.seed, out.input_neighbour_distance);
   out.input_coverage = out.input_neighbour_distance.empty()

@@ -95,6 +95,7 @@ void check_output_path(const std::filesystem::path& path, OutputKind kind) {
     case OutputKind::Mesh: expect({"ply", "off", "obj"}, ".ply, .off, .obj"); break;
     case OutputKind::Points: expect({"xyz", "ply"}, ".xyz, .ply"); break;
     case OutputKind::Image: expect({"png"}, ".png"); break;
+    case OutputKind::Polyline: expect({"polyline", "xyz"}, ".polyline, .xyz"); break;
     case OutputKind::Text: break;
   }
   const std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
@@ -102,6 +103,7 @@ void check_output_path(const std::filesystem::path& path, OutputKind kind) {
   if (!std::filesystem::is_directory(folder, ec)) {
     detail::fail(path, "folder '" + folder.string() + "' does not exist");
   }
+  if (std::filesystem::is_directory(path, ec)) detail::fail(path, "is a folder, not a file");
 }
 
 }  // namespace envcrust::io

@@ -5,19 +5,49 @@
 
 #include <tbb/parallel_sort.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <tuple>
 
 namespace envcrust::mesh {
 
-MergedPoints merge_duplicate_points(const std::vector<Point3>& points) {
+void check_coordinates(const std::vector<Point3>& points) {
+  double largest = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point3& p = points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       throw InvalidInput("point " + std::to_string(i) + " has a non-finite coordinate");
+    const double magnitude = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+    if (magnitude > kMaxCoordinate) {
+      std::ostringstream s;
+      s << "point " << i << " (from 0) has a coordinate of magnitude " << std::setprecision(3) << magnitude
+        << ", beyond " << kMaxCoordinate << ": scale the input down";
+      throw InvalidInput(s.str());
+    }
+    largest = std::max(largest, magnitude);
   }
+  const double diagonal = bbox_diagonal(points);
+  if (diagonal == 0.0) return;  // one point, repeated: the stages count distinct points
+  std::ostringstream s;
+  s << std::setprecision(3);
+  if (diagonal < kMinExtent) {
+    s << "the points span only " << diagonal << " (bounding-box diagonal), below " << kMinExtent
+      << ": scale the input up";
+    throw InvalidInput(s.str());
+  }
+  if (diagonal < kMinExtentRelMagnitude * largest) {
+    s << "the points span only " << diagonal << " at coordinates up to " << largest
+      << ": too few digits are left to tell them apart; move the input near the origin";
+    throw InvalidInput(s.str());
+  }
+}
+
+MergedPoints merge_duplicate_points(const std::vector<Point3>& points) {
+  check_coordinates(points);
   // Sorting indices with the index as last key gives each group of equal points its first
   // occurrence as representative, whatever the sort's thread schedule.
   std::vector<Index> order(points.size());

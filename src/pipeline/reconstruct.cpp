@@ -81,6 +81,13 @@ ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, cons
   out.seconds.envelope = clock.lap();
   out.warnings = out.envelope.warnings;
   progress.report("envelope", 1.0);
+  // Too few envelope samples for any triangulation (rho far beyond the input's size leaves
+  // none clear of it): an empty result, which the caller explains.
+  if (out.envelope.samples.size() < 5) {
+    out.warnings.push_back("the envelope has " + std::to_string(out.envelope.samples.size()) +
+                           " samples: nothing to extract");
+    return out;
+  }
 
   const bool need_crust =
       options.extraction == Extraction::PowerShape || options.use_envelope_crust_check;

@@ -28,8 +28,8 @@ Thresholds check_options(const PowerCrustOptions& options) {
   if (!(options.pole_joggle >= 0.0 && options.pole_joggle <= 1e-2))
     throw InvalidOptions("PowerCrustOptions.pole_joggle must be in [0, 1e-2] (got " +
                          format_value(options.pole_joggle) + ")");
-  if (!(options.bounding_box_scale > 1.0) || !std::isfinite(options.bounding_box_scale))
-    throw InvalidOptions("PowerCrustOptions.bounding_box_scale must be a finite number > 1 (got " +
+  if (!(options.bounding_box_scale > 1.0 && options.bounding_box_scale <= 1000.0))
+    throw InvalidOptions("PowerCrustOptions.bounding_box_scale must be in (1, 1000] (got " +
                          format_value(options.bounding_box_scale) + ")");
   if (!(options.min_pole_radius_rel_spacing >= 0.0) || !std::isfinite(options.min_pole_radius_rel_spacing))
     throw InvalidOptions("PowerCrustOptions.min_pole_radius_rel_spacing must be a finite number >= 0 (got " +

@@ -135,6 +135,16 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
   const PowerDiagram diagram =
       build_power_diagram(result.poles, sample_box, parallel(result.poles.size()),
                           options.pole_joggle, skip);
+  // Poles left out (the minimum radius, bad poles) may leave too few to span a volume.
+  if (diagram.rt->dimension() < 3) {
+    const std::size_t left_out = static_cast<std::size_t>(std::count(skip.begin(), skip.end(), true));
+    throw DegenerateInput("only " + std::to_string(result.poles.size() - left_out) + " of " +
+                          std::to_string(result.poles.size()) + " poles are left for the power diagram" +
+                          (stats.filtered_poles > 0 ? " (the minimum pole radius left out " +
+                                                          std::to_string(stats.filtered_poles) + ")"
+                                                    : std::string()) +
+                          ": they span no volume");
+  }
   stats.power_diagram_cells = diagram.rt->number_of_finite_cells();
   stats.seconds_power_diagram = clock.lap("power_diagram");
 
@@ -169,6 +179,12 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     stats.unbounded_crust_faces = crust.unbounded_faces;
     stats.crust_faces = result.crust.triangles.size();
     result.warnings.insert(result.warnings.end(), crust.warnings.begin(), crust.warnings.end());
+    if (stats.crust_faces == 0 && stats.inner_poles > 0)
+      result.warnings.push_back("the crust is empty: no face of the power diagram separates an inner pole from an "
+                                "outer one (" + std::to_string(stats.inner_poles) + " inner poles" +
+                                (stats.filtered_poles > 0 ? ", " + std::to_string(stats.filtered_poles) +
+                                                                " poles left out by the minimum pole radius"
+                                                          : std::string()) + ")");
     stats.seconds_crust = clock.lap("crust");
   }
   if (options.build_power_shape) {

@@ -2,13 +2,16 @@
 #include "envcrust/remesh.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 #include "envcrust/topology.h"
 #include "isotropic.h"
 
 #include <CGAL/exceptions.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace envcrust::remesh {
@@ -25,6 +28,7 @@ void validate(const RemeshOptions& o) {
   if (!(std::isfinite(o.edge_length_rel_median) && o.edge_length_rel_median > 0))
     fail("edge_length_rel_median", "positive", o.edge_length_rel_median);
   if (o.iterations < 1 || o.iterations > 100) fail("iterations", "in 1..100", o.iterations);
+  if (!(std::isfinite(o.max_face_growth) && o.max_face_growth >= 1)) fail("max_face_growth", ">= 1", o.max_face_growth);
 }
 
 // The numbers remeshing must not change, as "chi 0, 1 component, 2 loops, orientable".
@@ -63,6 +67,16 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options) {
   const double target = options.target_edge_length.value_or(options.edge_length_rel_median * median_edge_length(mesh));
   out.stats.target_edge_length = target;
   if (!(target > 0)) return finish("remeshing skipped: the mesh has no edge of positive length");
+  // An equilateral triangle of edge `target` covers sqrt(3)/4 target^2.
+  const double expected_faces = mesh::total_area(mesh) / (std::sqrt(3.0) / 4.0 * target * target);
+  const double max_faces = std::max(1e6, options.max_face_growth * static_cast<double>(before.faces));
+  if (expected_faces > max_faces) {
+    std::ostringstream s;
+    s << "remeshing skipped: a target edge of " << target << " would make about " << std::setprecision(2)
+      << expected_faces << " faces, more than " << max_faces << " (" << options.max_face_growth
+      << " times the mesh's " << before.faces << ", at least 1M)";
+    return finish(s.str());
+  }
 
   TriangleMesh remeshed;
   try {

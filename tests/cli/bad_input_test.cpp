@@ -7,12 +7,15 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 using envcrust::testing::CliTest;
 using envcrust::testing::run_envcrust;
+using envcrust::testing::run_envcrust_json;
 
 namespace {
 
@@ -117,4 +120,107 @@ TEST_F(CliTest, powercrust_poles_ply_is_read_back_by_render_balls) {
   const auto image = run_envcrust("render " + path("c.ply") + " --balls " + path("poles.ply") + " -o " + path("b.png") + " --size 64x64");
   EXPECT_EQ(image.exit_code, 0) << image.err;
   EXPECT_TRUE(std::filesystem::exists(path("b.png")));
+}
+
+namespace {
+
+// A sphere of 400 points (a Fibonacci lattice; z from 0.9975 down) scaled by `scale` and moved by `offset`.
+void write_sphere(const std::string& file, double scale, double offset) {
+  std::ofstream f(file);
+  f.precision(17);
+  for (int i = 0; i < 400; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / 400.0, r = std::sqrt(1.0 - z * z), a = 2.399963229728653 * i;
+    f << offset + scale * r * std::cos(a) << " " << offset + scale * r * std::sin(a) << " " << offset + scale * z
+      << "\n";
+  }
+}
+
+}  // namespace
+
+// Coordinates the geometry cannot hold (squares of squared radii overflow beyond about 1e77,
+// underflow below 1e-77; a unit sphere 1e12 from the origin keeps 4 digits) are refused by
+// name before any stage runs: the Power Crust crashed on the first two.
+TEST_F(CliTest, coordinates_too_large_too_small_or_too_far_out_are_refused) {
+  write_sphere(path("big.xyz"), 1e100, 0.0);
+  write_sphere(path("small.xyz"), 1e-150, 0.0);
+  write_sphere(path("far.xyz"), 1.0, 1e12);
+  const std::pair<const char*, const char*> cases[] = {
+      {"big.xyz", ": point 0 (from 0) has a coordinate of magnitude 9.98e+99, beyond 1e+30: scale the input down"},
+      {"small.xyz", ": the points span only 3.45e-150 (bounding-box diagonal), below 1e-30: scale the input up"},
+      {"far.xyz", ": the points span only 3.46 at coordinates up to 1e+12: too few digits are left to tell them "
+                  "apart; move the input near the origin"},
+  };
+  for (const auto& [name, problem] : cases) {
+    for (const char* command : {"powercrust", "reconstruct"}) {
+      const auto r = run_envcrust(std::string(command) + " " + path(name) + " -o " + path("out.ply"));
+      EXPECT_EQ(r.exit_code, 1) << command << " " << name;
+      EXPECT_EQ(r.err, "envcrust: error: " + path(name) + problem + "\n") << command;
+      EXPECT_FALSE(std::filesystem::exists(path("out.ply"))) << command << " " << name;
+    }
+  }
+}
+
+// A run that fails after its stages (an unreadable reference, a report path that is a
+// folder) writes none of its outputs, and two outputs naming one file are refused up front.
+TEST_F(CliTest, failed_runs_leave_no_outputs_and_outputs_must_differ) {
+  write_sphere(path("s.xyz"), 1.0, 0.0);
+  const std::string out = path("out.ply");
+  auto r = run_envcrust("reconstruct " + path("s.xyz") + " -o " + out + " -r " + path("none.off"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("none.off") + ": cannot open file\n");
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  std::filesystem::create_directories(path("r.json"));
+  r = run_envcrust("reconstruct " + path("s.xyz") + " -o " + out + " --report " + path("r.json"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("r.json") + ": is a folder, not a file\n");
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  r = run_envcrust("reconstruct " + path("s.xyz") + " -o " + out + " --envelope-out " + path(".") + "/out.ply");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "envcrust: usage error: -o and --envelope-out name the same file '" + path(".") + "/out.ply'\n");
+  EXPECT_FALSE(std::filesystem::exists(out));
+
+  r = run_envcrust("sample trefoil-ribbon -n 100 -o " + path("m.xyz") + " --boundary-out " + path("b.off"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "envcrust: error: " + path("b.off") + ": unknown extension '.off' (expected .polyline, .xyz)\n");
+  EXPECT_FALSE(std::filesystem::exists(path("m.xyz")));
+
+  r = run_envcrust("envelope " + path("s.xyz") + " --rho 1e9 -o " + path("e.xyz"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: " + path("s.xyz") + ": the envelope has no samples: rho 1e+09 is more "
+                        "than a quarter of the input's size", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(path("e.xyz")));
+
+  std::ofstream(path("file")) << "x\n";
+  r = run_envcrust("experiment cylinder --quick --no-figures -o " + path("file"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: " + path("file") + ": cannot make the output folder (", 0), 0u) << r.err;
+}
+
+// Counts and ranges are checked when parsed, naming the flag; a file name that is not UTF-8
+// still gives valid JSON (the bytes replaced).
+TEST_F(CliTest, flags_out_of_range_name_the_flag_and_json_survives_any_file_name) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"sample sphere -n 1000000000000 -o " + path("s.xyz"),
+       "--count: must be a whole number in 1..100000000 (got '1000000000000')"},
+      {"reconstruct builtin:cylinder --spacing 0 -o " + path("c.ply"), "--spacing: must be a number in (0, 4] (got '0')"},
+      {"reconstruct builtin:cylinder --rho-gap-quantile nan -o " + path("c.ply"),
+       "--rho-gap-quantile: must be a number in [0, 1] (got 'nan')"},
+      {"reconstruct builtin:cylinder --remesh --remesh-iterations 0 -o " + path("c.ply"),
+       "--remesh-iterations: must be a whole number in 1..100 (got '0')"},
+      {"powercrust builtin:sphere --box-scale 1e12 -o " + path("c.ply"),
+       "--box-scale: must be a number in (1, 1000] (got '1e12')"},
+      {"reconstruct builtin:cylinder --rho inf -o " + path("c.ply"), "--rho must be 'auto' or a positive number (got 'inf')"},
+  };
+  for (const auto& [args, problem] : cases) {
+    const auto r = run_envcrust(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, "envcrust: usage error: " + problem + "\n") << args;
+  }
+  const std::string odd = path("bad\xff\xfe.xyz");
+  write_sphere(odd, 1.0, 0.0);
+  const auto j = run_envcrust_json("powercrust '" + odd + "' -o " + path("c.ply") + " --json");
+  EXPECT_EQ(j["input"], path("bad\xEF\xBF\xBD\xEF\xBF\xBD.xyz"));
+  EXPECT_TRUE(std::filesystem::exists(path("c.ply")));
 }

@@ -54,10 +54,10 @@ TEST_F(CliTest, sample_list_names_every_surface_with_its_topology) {
 // to wrap around to a huge one (std::bad_alloc, exit 3).
 TEST_F(CliTest, counts_and_sizes_are_checked_with_a_plain_message) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"sample torus -n -5 -o " + path("t.xyz"), "--count: must be a whole number >= 1 (got '-5')"},
-      {"sample torus -n 2.5 -o " + path("t.xyz"), "--count: must be a whole number >= 1 (got '2.5')"},
-      {"reconstruct builtin:torus -n -5 -o " + path("t.ply"), "--count: must be a whole number >= 1 (got '-5')"},
-      {"analyze builtin:torus --samples -5", "--samples: must be a whole number >= 0 (got '-5')"},
+      {"sample torus -n -5 -o " + path("t.xyz"), "--count: must be a whole number in 1..100000000 (got '-5')"},
+      {"sample torus -n 2.5 -o " + path("t.xyz"), "--count: must be a whole number in 1..100000000 (got '2.5')"},
+      {"reconstruct builtin:torus -n -5 -o " + path("t.ply"), "--count: must be a whole number in 1..100000000 (got '-5')"},
+      {"analyze builtin:torus --samples -5", "--samples: must be a whole number in 0..100000000 (got '-5')"},
       {"reconstruct builtin:cylinder --cut-handles -2 -o " + path("t.ply"),
        "--cut-handles: must be a number >= 0 (got '-2')"},
       {"reconstruct builtin:cylinder --orientable-cut 0 -o " + path("t.ply"),
@@ -327,8 +327,10 @@ TEST_F(CliTest, reconstruct_with_an_absurd_rho_says_why_and_what_to_use) {
                  "builtin:cylinder: the reconstruction is empty: rho 1e+06 is more than a quarter of the input's "
                  "size (diagonal 3.46",
                  "use a rho below 0.346");
-  expect_refused("1e-6", "rho 1e-06 is too small for the boundary curves: their half-tubes would take ",
-                 "(at most 1e+07); use rho >= ");
+  expect_refused("1e-6",
+                 "builtin:cylinder: rho 1e-06 at a sample spacing of 0.25 rho is too small for the boundary curves: "
+                 "their half-tubes would take ",
+                 "(at most 1e+07); rho >= ");
 }
 
 // 300 samples of the cylinder are too sparse for half its reach: the automatic rho bridges
@@ -421,7 +423,7 @@ TEST_F(CliTest, powercrust_leaves_out_small_poles_of_a_noisy_sample) {
   EXPECT_EQ(j["crust"]["is_closed"], true);
   const auto r = run_envcrust("powercrust " + path("s.xyz") + " --min-pole-radius -1 -o " + path("x.ply"));
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(r.err, "envcrust: usage error: --min-pole-radius: must be a number >= 0 (got '-1')\n");
+  EXPECT_EQ(r.err, "envcrust: usage error: --min-pole-radius: must be a number in [0, 100] (got '-1')\n");
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
@@ -660,7 +662,8 @@ TEST_F(CliTest, reconstruct_refuses_points_on_a_line_and_repeated_points) {
     std::ofstream out(path("line.xyz"));
     for (int i = 0; i < 100; ++i) out << i / 7.0 << " " << 2 * i / 7.0 << " " << -i / 7.0 << "\n";  // 6 digits
   }
-  expect_reconstruct_refuses("line.xyz", "all 100 points lie on a line: no surface to reconstruct");
+  expect_reconstruct_refuses("line.xyz",
+                             "all 100 points lie on a line (within 1e-5 of their extent, 34.6): no surface to reconstruct");
   {
     std::ofstream out(path("same.xyz"));
     for (int i = 0; i < 50; ++i) out << (i % 2 ? "1 2 3\n" : "1 2 4\n");

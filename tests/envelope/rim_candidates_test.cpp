@@ -36,15 +36,34 @@ TEST(RimCandidateCount, a_rho_too_small_for_the_rims_is_refused_before_they_are_
     FAIL() << "expected DegenerateInput";
   } catch (const DegenerateInput& e) {
     const std::string m = e.what();
-    EXPECT_EQ(m.rfind("rho 1e-06 is too small for the boundary curves: their half-tubes would take ", 0), 0u) << m;
+    EXPECT_EQ(m.rfind("rho 1e-06 at a sample spacing of 0.25 rho is too small for the boundary curves: their "
+                      "half-tubes would take ", 0), 0u) << m;
     // The rho it names keeps the rims at the limit: 1e7 candidates.
-    const auto at = m.find("use rho >= ");
+    const auto at = m.find("rho >= ");
     ASSERT_NE(at, std::string::npos) << m;
-    const double named = std::stod(m.substr(at + 11));
+    const double named = std::stod(m.substr(at + 7));
     std::vector<std::vector<double>> rim_rho;
     for (const auto& c : samples.boundary) rim_rho.emplace_back(c.vertices.size(), 1.01 * named);
     EXPECT_LT(envelope::rim_candidate_count(samples.boundary, rim_rho, options.spacing_rel_rho, 1 / 3.3), 1e7);
     for (auto& r : rim_rho) r.assign(r.size(), 0.9 * named);
     EXPECT_GT(envelope::rim_candidate_count(samples.boundary, rim_rho, options.spacing_rel_rho, 1 / 3.3), 1e7);
+    // A spacing above the default would thin the envelope out: not offered.
+    EXPECT_EQ(m.find("a spacing of "), std::string::npos) << m;
+    // Below the default it is: at 10x that rho and a spacing of 0.002 rho, the spacing it
+    // names keeps the rims at the limit too.
+    options.rho = 10 * named;
+    options.spacing_rel_rho = 0.002;
+    try {
+      (void)envelope::sample_envelope(samples, options);
+      FAIL() << "expected DegenerateInput at spacing 0.002";
+    } catch (const DegenerateInput& small) {
+      const std::string n = small.what();
+      const auto spacing_at = n.find("a spacing of ");
+      ASSERT_NE(spacing_at, std::string::npos) << n;
+      const double spacing = std::stod(n.substr(spacing_at + 13));
+      for (auto& r : rim_rho) r.assign(r.size(), 10 * named);
+      EXPECT_LT(envelope::rim_candidate_count(samples.boundary, rim_rho, 1.01 * spacing, 1 / 3.3), 1e7);
+      EXPECT_GT(envelope::rim_candidate_count(samples.boundary, rim_rho, 0.9 * spacing, 1 / 3.3), 1e7);
+    }
   }
 }

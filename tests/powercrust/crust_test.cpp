@@ -1,6 +1,8 @@
 // The crust on sampled sphere and torus (sizes, noise), the open cylinder, face provenance.
 #include "support.h"
 
+#include "envcrust/errors.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -106,6 +108,24 @@ TEST(PowerCrustCrust, small_pole_filter_keeps_exact_samples_poles) {
   EXPECT_TRUE(t.is_closed());
   EXPECT_EQ(t.euler_characteristic, 2);
   EXPECT_LT(test_support::relative_hausdorff(filtered.crust, "sphere"), 0.01);
+}
+
+// A minimum pole radius far beyond the poles' sizes leaves too few poles to span a volume:
+// refused with the count (it crashed the pole graph before, 2026-11-28).
+TEST(PowerCrustCrust, small_pole_filter_leaving_no_volume_is_refused) {
+  const auto points = test_support::sample_builtin("sphere", 2000, 0.0);
+  PowerCrustOptions options;
+  options.min_pole_radius_rel_spacing = 1000.0;
+  try {
+    (void)power_crust(points, options);
+    FAIL() << "expected DegenerateInput";
+  } catch (const DegenerateInput& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("only ", 0), 0u) << m;
+    EXPECT_NE(m.find(" poles are left for the power diagram (the minimum pole radius left out "), std::string::npos)
+        << m;
+    EXPECT_NE(m.find("): they span no volume"), std::string::npos) << m;
+  }
 }
 
 // The pole joggle (on by default) breaks up the exact torus's wedge/slab pattern: the crust

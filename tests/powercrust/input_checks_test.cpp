@@ -85,7 +85,7 @@ TEST(PowerCrustChecks, options_out_of_range_name_field_and_value) {
   PowerCrustOptions options;
   options.bounding_box_scale = 0.5;
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),
-            "PowerCrustOptions.bounding_box_scale must be a finite number > 1 (got 0.5)");
+            "PowerCrustOptions.bounding_box_scale must be in (1, 1000] (got 0.5)");
   options = {};
   options.pole_joggle = 0.05;
   EXPECT_EQ(message_of<InvalidOptions>([&] { (void)power_crust(points, options); }),

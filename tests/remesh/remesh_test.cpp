@@ -206,6 +206,22 @@ TEST(Remesh, skips_a_non_manifold_mesh_with_a_warning) {
                                  "non-manifold vertices)"});
 }
 
+// A target so small that the faces would outgrow the memory is skipped before any work: the
+// unit square at edge 1e-4 would take about 2.3e8 triangles.
+TEST(Remesh, skips_a_target_that_would_make_too_many_faces) {
+  remesh::RemeshOptions options;
+  options.target_edge_length = 1e-4;
+  const auto result = remesh::remesh(grid(10), options);
+  EXPECT_FALSE(result.stats.is_remeshed);
+  EXPECT_EQ(result.mesh.triangles.size(), grid(10).triangles.size());
+  EXPECT_EQ(result.warnings, std::vector<std::string>{
+                                 "remeshing skipped: a target edge of 0.0001 would make about 2.3e+08 faces, more "
+                                 "than 1e+06 (4 times the mesh's 200, at least 1M)"});
+  // At 0.01, about 12,000 faces, it runs.
+  options.target_edge_length = 0.01;
+  EXPECT_TRUE(remesh::remesh(grid(10), options).stats.is_remeshed);
+}
+
 TEST(Remesh, bad_options_give_exact_messages) {
   remesh::RemeshOptions o;
   o.target_edge_length = -1.0;
@@ -219,6 +235,9 @@ TEST(Remesh, bad_options_give_exact_messages) {
   o = {};
   o.iterations = 0;
   EXPECT_EQ(invalid_options_message(o), "RemeshOptions::iterations must be in 1..100 (got 0)");
+  o = {};
+  o.max_face_growth = 0.5;
+  EXPECT_EQ(invalid_options_message(o), "RemeshOptions::max_face_growth must be >= 1 (got 0.5)");
 }
 
 TEST(Remesh, bad_face_index_is_invalid_input) {
