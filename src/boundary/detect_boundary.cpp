@@ -277,8 +277,8 @@ std::vector<Vector3> checked_normals(const std::vector<Point3>& points, const st
   validate(options);
   std::vector<Vector3> normals = unit_normals(points, normal_lines);
   if (points.size() < static_cast<std::size_t>(options.neighbors) + 1) {
-    throw DegenerateInput("boundary detection needs at least neighbors + 1 = " +
-                          std::to_string(options.neighbors + 1) + " points (got " +
+    throw DegenerateInput("boundary detection needs at least " + std::to_string(options.neighbors + 1) +
+                          " points, each with its " + std::to_string(options.neighbors) + " nearest neighbours (got " +
                           std::to_string(points.size()) + ")");
   }
   return normals;

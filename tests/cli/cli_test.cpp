@@ -652,7 +652,8 @@ TEST_F(CliTest, reconstruct_too_few_points_names_the_file) {
     std::ofstream out(path("few.xyz"));
     for (int i = 0; i < 20; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << "\n";
   }
-  expect_reconstruct_refuses("few.xyz", "boundary detection needs at least neighbors + 1 = 33 points (got 20)");
+  expect_reconstruct_refuses("few.xyz",
+                             "boundary detection needs at least 33 points, each with its 32 nearest neighbours (got 20)");
 }
 
 // Points on a line, or one point repeated, are no surface: refused with the file's name
