@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -68,29 +69,29 @@ std::string percent(double fraction) {
   return out.str();
 }
 
-CLI::Validator whole_number_at_least(long long min) {
-  return CLI::Validator(
-      [min](std::string& text) -> std::string {
-        long long value = 0;
-        const char* end = text.data() + text.size();
-        const auto [at, error] = std::from_chars(text.data(), end, value);
-        if (error == std::errc() && at == end && value >= min) return "";
-        return "must be a whole number >= " + std::to_string(min) + " (got '" + text + "')";
-      },
-      "INT>=" + std::to_string(min));
-}
+namespace {
 
-CLI::Validator whole_number_in(long long min, long long max) {
-  const std::string range = std::to_string(min) + ".." + std::to_string(max);
+// A whole number in [min, max]; `expected` says which ("in 1..100", ">= 1").
+CLI::Validator whole_number(long long min, long long max, const std::string& expected) {
   return CLI::Validator(
-      [min, max, range](std::string& text) -> std::string {
+      [=](std::string& text) -> std::string {
         long long value = 0;
         const char* end = text.data() + text.size();
         const auto [at, error] = std::from_chars(text.data(), end, value);
         if (error == std::errc() && at == end && value >= min && value <= max) return "";
-        return "must be a whole number in " + range + " (got '" + text + "')";
+        return "must be a whole number " + expected + " (got '" + text + "')";
       },
-      "INT in " + range);
+      "INT " + expected);
+}
+
+}  // namespace
+
+CLI::Validator whole_number_at_least(long long min) {
+  return whole_number(min, std::numeric_limits<long long>::max(), ">= " + std::to_string(min));
+}
+
+CLI::Validator whole_number_in(long long min, long long max) {
+  return whole_number(min, max, "in " + std::to_string(min) + ".." + std::to_string(max));
 }
 
 CLI::Validator number_above(double min, bool inclusive) {

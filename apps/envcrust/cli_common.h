@@ -1,6 +1,7 @@
 // Shared pieces of the CLI: common flags, terminal progress, JSON/text output helpers.
 #pragma once
 
+#include "envcrust/errors.h"
 #include "envcrust/progress.h"
 
 #include <CLI/CLI.hpp>
@@ -56,6 +57,22 @@ CLI::Validator number_above(double min, bool inclusive = false);
 /// Check of a real option in a range: a finite number between `min` and `max`, each bound
 /// included or not, else "must be a number in (0, 4] (got 'nan')" (CLI11's Range lets NaN by).
 CLI::Validator number_in(double min, double max, bool min_inclusive, bool max_inclusive);
+
+/// Runs a stage on an input, naming the input (`spec`) at the head of what the stage refuses
+/// (DegenerateInput, NumericalFailure, InvalidInput), unless the message already starts so.
+template <class Stage>
+auto naming_input(const std::string& spec, Stage&& stage) {
+  auto named = [&](const std::string& what) { return what.rfind(spec + ":", 0) == 0 ? what : spec + ": " + what; };
+  try {
+    return stage();
+  } catch (const DegenerateInput& e) {
+    throw DegenerateInput(named(e.what()));
+  } catch (const NumericalFailure& e) {
+    throw NumericalFailure(named(e.what()));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(named(e.what()));
+  }
+}
 
 /// Usage error raised by a subcommand after parsing (exit code 2, like CLI11's own errors).
 class UsageError : public std::runtime_error {

@@ -51,15 +51,9 @@ void run_powercrust(PowerCrustCommand& cmd) {
   cmd.options.build_power_shape = !cmd.medial_axis_output.empty();
   const auto points = load_points(cmd);
   // The engine names the problem (too few distinct points, coplanar); the message names the file.
-  const auto result = [&] {
-    try {
-      return powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
-    } catch (const DegenerateInput& e) {
-      throw DegenerateInput(cmd.input + ": " + e.what());
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(cmd.input + ": " + e.what());
-    }
-  }();
+  const auto result = naming_input(cmd.input, [&] {
+    return powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
+  });
   io::write_mesh(cmd.output, result.crust);
   if (!cmd.medial_axis_output.empty()) io::write_mesh(cmd.medial_axis_output, pipeline::power_shape_mesh(result));
   if (!cmd.poles_output.empty()) {

@@ -269,21 +269,6 @@ nlohmann::json defects_json(const pipeline::RunDefects& d, const std::optional<l
           {"defects", d.genus ? nlohmann::json(d.count(max_genus)) : nlohmann::json(nullptr)}};
 }
 
-// Runs a stage on the input, naming the input in what it refuses (unless the message does).
-template <class Stage>
-auto naming_input(const std::string& spec, Stage&& stage) {
-  auto named = [&](const std::string& what) { return what.rfind(spec + ":", 0) == 0 ? what : spec + ": " + what; };
-  try {
-    return stage();
-  } catch (const DegenerateInput& e) {
-    throw DegenerateInput(named(e.what()));
-  } catch (const NumericalFailure& e) {
-    throw NumericalFailure(named(e.what()));
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(named(e.what()));
-  }
-}
-
 // Why a run came out empty, for its error: rho too small for the input's gaps, the input too
 // sparse for its size, or rho too large for it. Starts with the input's name and `what`.
 std::string empty_result_reason(const ReconstructCommand& cmd, const LoadedSurface& loaded,

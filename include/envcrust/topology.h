@@ -33,12 +33,13 @@ struct ComponentTopology {
 /// Topology of a whole mesh. Vertices with identical coordinates are welded first.
 struct MeshTopology {
   std::size_t input_vertices = 0;    ///< as given
-  std::size_t vertices = 0;          ///< used by a non-degenerate face, after welding
+  std::size_t vertices = 0;          ///< used by a counted face, after welding
   std::size_t welded_vertices = 0;   ///< vertices merged into an identical one
   std::size_t unused_vertices = 0;   ///< referenced by no face
-  std::size_t faces = 0;             ///< non-degenerate faces counted in the topology
+  std::size_t faces = 0;             ///< faces with three distinct vertices (zero-area ones too)
   std::size_t edges = 0;
-  std::size_t degenerate_faces = 0;  ///< repeated vertex or zero area (collinear corners)
+  /// Faces with a repeated vertex (left out of `faces`) or of zero area (counted in it).
+  std::size_t degenerate_faces = 0;
   std::size_t duplicate_faces = 0;   ///< same vertex set as an earlier face
   std::size_t boundary_edges = 0;    ///< edges with exactly one face
   std::size_t non_manifold_edges = 0;     ///< edges with three or more faces

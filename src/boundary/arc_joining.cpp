@@ -76,22 +76,16 @@ std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, st
     if (lines[a].end_gap > limits.close_gap && lines[a].open_length >= limits.min_arc) open.push_back(a);
   }
   if (open.size() < 2) return 0;
-  // Greedy matching of ends, shortest links first; `far[e]` is the free end at the other end
-  // of e's chain, so a link between the two ends of one chain closes it into a cycle.
+  // Greedy matching of ends, shortest links first (a link between the two ends of one chain
+  // closes it into a cycle).
   const std::size_t ends = 2 * open.size();
-  std::vector<std::size_t> partner(ends, kNone), far(ends);
+  std::vector<std::size_t> partner(ends, kNone);
   std::vector<double> link_length(ends, 0.0);
-  for (std::size_t e = 0; e < ends; ++e) far[e] = e ^ 1U;
   for (const Link& link : candidate_links(lines, open, points, index, limits)) {
     if (partner[link.e] != kNone || partner[link.f] != kNone) continue;
     partner[link.e] = link.f;
     partner[link.f] = link.e;
     link_length[link.e] = link_length[link.f] = link.length;
-    if (far[link.e] != link.f) {
-      const std::size_t x = far[link.e], y = far[link.f];
-      far[x] = y;
-      far[y] = x;
-    }
   }
   // The groups of linked arcs: each cycle walked from its lowest end, each chain of two or
   // more arcs from its lower free end. A group becomes one loop if its links, with the gap
