@@ -20,7 +20,8 @@ struct MergedPoints {
 
 /// Largest coordinate magnitude the geometry accepts: the power tests of the Power Crust
 /// square squared weights (radius^4), which overflow a double near 1e77 (a sphere of radius
-/// 1e80 crashed CGAL's regular triangulation; 1e60 still worked).
+/// 1e80 crashed the Power Crust, 1e60 still worked; 1e-25 to 1e25 give the unit sphere's
+/// crust and reconstruction exactly, measured 2026-11-28).
 inline constexpr double kMaxCoordinate = 1e30;
 /// Smallest extent (bounding-box diagonal) accepted, for the same reason at the other end:
 /// fourth powers of 1e-80 underflow (a sphere of radius 1e-150 left one pole).
