@@ -25,11 +25,7 @@ namespace {
 // faces carry the surface between vertices), and the mesh's border loops with frames.
 void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface& out) {
   if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
-  try {
-    mesh::check_coordinates(mesh.vertices);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(spec + ": vertex" + std::string(e.what()).substr(std::string("point").size()));
-  }
+  naming_input(spec, [&] { mesh::check_coordinates(mesh.vertices, "vertex"); });
   out.source = "mesh";
   out.kind.is_builtin = false;
   if (const std::size_t dropped = mesh::remove_duplicate_faces(mesh); dropped > 0)
@@ -99,12 +95,7 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
       throw InvalidInput(spec + ": point " + std::to_string(i + 1) + " has a zero normal");
     read.normals[i] = read.normals[i] / length;
   }
-  mesh::MergedPoints merged;
-  try {
-    merged = mesh::merge_duplicate_points(read.points);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(spec + ": " + e.what());
-  }
+  mesh::MergedPoints merged = naming_input(spec, [&] { return mesh::merge_duplicate_points(read.points); });
   PointSet out;
   out.points = std::move(merged.points);
   if (read.has_normals()) {

@@ -71,7 +71,8 @@ enum class OutputKind {
 };
 
 /// Check before a long run that `path` can be written as `kind`: a file name with a known
-/// extension, in a folder that exists, not itself a folder ("out: is a folder, not a file"). @throws IoError naming the file ("x.unknown: unknown
+/// extension, in a folder that exists, not itself a folder ("out: is a folder, not a file").
+/// @throws IoError naming the file ("x.unknown: unknown
 /// extension '.unknown' (expected .ply, .off, .obj)", "out/x.ply: folder 'out' does not exist").
 void check_output_path(const std::filesystem::path& path, OutputKind kind);
 

@@ -4,6 +4,7 @@
 #include "envcrust/types.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace envcrust::mesh {
@@ -36,7 +37,8 @@ inline constexpr double kMinExtentRelMagnitude = 1e-9;
 /// 0) has a coordinate of magnitude 1e+100, beyond 1e+30: scale the input down"), or points
 /// spanning less than kMinExtent, or less than kMinExtentRelMagnitude of their coordinates
 /// ("... move the input near the origin"). Points that are all equal pass (counted later).
-void check_coordinates(const std::vector<Point3>& points);
+/// `item` names one point in the messages ("vertex 12 ..." for a mesh's vertices).
+void check_coordinates(const std::vector<Point3>& points, const std::string& item = "point");
 
 /// Merge exact duplicates: each group of equal points is represented by its first occurrence.
 /// Deterministic whatever the thread schedule.

@@ -15,16 +15,16 @@
 
 namespace envcrust::mesh {
 
-void check_coordinates(const std::vector<Point3>& points) {
+void check_coordinates(const std::vector<Point3>& points, const std::string& item) {
   double largest = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point3& p = points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw InvalidInput("point " + std::to_string(i) + " has a non-finite coordinate");
+      throw InvalidInput(item + " " + std::to_string(i) + " has a non-finite coordinate");
     const double magnitude = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
     if (magnitude > kMaxCoordinate) {
       std::ostringstream s;
-      s << "point " << i << " (from 0) has a coordinate of magnitude " << std::setprecision(3) << magnitude
+      s << item << " " << i << " (from 0) has a coordinate of magnitude " << std::setprecision(3) << magnitude
         << ", beyond " << kMaxCoordinate << ": scale the input down";
       throw InvalidInput(s.str());
     }
