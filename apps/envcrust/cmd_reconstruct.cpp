@@ -3,6 +3,7 @@
 #include "boundary_check_output.h"
 #include "cli_common.h"
 #include "commands.h"
+#include "curve_output.h"
 #include "inputs.h"
 #include "surface_input.h"
 
@@ -88,19 +89,7 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
   auto* no_boundary = sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
                                    "Point files: do not detect boundary curves (a closed surface)");
-  sub.add_option("--boundary", cmd.sampling.boundary_files,
-                 "Point files: boundary points to use instead of detecting them (point files in any "
-                 "order or closed .polyline curves, repeatable, several loops; each point marks its "
-                 "nearest sample; normals, if every file has them, are outward conormals)")->excludes(no_boundary);
-  sub.add_option("--boundary-min-width", cmd.sampling.boundary.min_loop_width,
-                 "Point files: drop detected loops narrower than this many local spacings "
-                 "(sampling gaps, not holes); 0 keeps all")
-      ->capture_default_str()
-      ->check(number_above(0, true));
-  sub.add_flag("--no-boundary-outer-fit",
-               [&cmd](std::int64_t) { cmd.sampling.boundary.fit_to_outer_samples = false; },
-               "Point files: leave detected curves on the centre line of the flagged band instead of "
-               "moving them out to its outermost samples");
+  add_boundary_options(sub, cmd.sampling)->excludes(no_boundary);
   sub.add_flag("--rho-adaptive",
                [&cmd](std::int64_t) { cmd.options.envelope.rho_mode = envelope::RhoMode::Adaptive; },
                "Vary rho with the local feature size: rho(p) = alpha lfs(p), clamped to "
@@ -122,18 +111,9 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                "Adaptive rho: only shrink with the local feature size (by default it also grows where the "
                "samples are sparse, to bridge their local gaps, also beyond --rho)");
   sub.add_option("--boundary-out", cmd.boundary_output,
-                 "Also write the boundary curves used (detected or read), all vertices as one point "
-                 "file (.xyz/.ply; normals = outward conormals)");
-}
-
-void write_boundary_points(const std::string& path, const envelope::SurfaceSamples& samples) {
-  PointSet points;
-  for (const auto& curve : samples.boundary)
-    for (const auto& b : curve.vertices) {
-      points.points.push_back(b.position);
-      points.normals.push_back(b.conormal);
-    }
-  io::write_points(path, points);
+                 "Also write the boundary curves used (detected or read): .polyline, one closed curve "
+                 "per file (FILE.i.polyline when several), or .xyz/.ply, all vertices as one point file "
+                 "(normals = outward conormals)");
 }
 
 nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
@@ -155,7 +135,8 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
 // which --boundary-min-width would drop them. Only when the detection dropped none by width,
 // and no loop is thinner than a stripe can be.
 std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
-  const auto& widths = loaded.detected_loop_widths;
+  if (!loaded.detection) return std::nullopt;
+  const auto& widths = loaded.detection->loop_widths;
   if (widths.size() < 2 || loaded.min_loop_width > 0) return std::nullopt;
   const double widest = *std::max_element(widths.begin(), widths.end());
   std::vector<std::size_t> narrow;
@@ -298,7 +279,7 @@ std::string empty_result_reason(const ReconstructCommand& cmd, const LoadedSurfa
 void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   io::check_output_path(cmd.output, output_kind);
   if (!cmd.envelope_output.empty()) io::check_output_path(cmd.envelope_output, io::OutputKind::Points);
-  if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Points);
+  if (!cmd.boundary_output.empty()) check_curve_output(cmd.boundary_output);
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
   check_distinct_outputs({{"-o", cmd.output},
                           {"--envelope-out", cmd.envelope_output},
@@ -341,7 +322,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
                            {"adaptive", defects_json(retry->adaptive, retry->max_genus)},
                            {"kept", retry->kept_adaptive ? "adaptive" : "uniform"}};
   }
-  if (!loaded.detected_loop_widths.empty()) j["input_boundary_widths"] = loaded.detected_loop_widths;
+  if (loaded.detection && !loaded.detection->loop_widths.empty())
+    j["input_boundary_widths"] = loaded.detection->loop_widths;
   if (result.sheet_stats) {
     const auto& s = *result.sheet_stats;
     j["sheet"] = {{"delaunay_edges", s.delaunay_edges}, {"crossing_edges", s.crossing_edges},
@@ -447,7 +429,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     }
     io::write_points(cmd.envelope_output, env);
   }
-  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
+  if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, report_text);
   if (cmd.common.json) {
     print_json(j);
@@ -507,7 +489,7 @@ void run_envelope(ReconstructCommand& cmd) {
   const auto env = naming_input(cmd.input, [&] { return envelope::sample_envelope(loaded.samples, cmd.options.envelope); });
   progress.report("envelope", 1.0);
   if (env.samples.empty()) throw NumericalFailure(empty_result_reason(cmd, loaded, env, "the envelope has no samples"));
-  if (!cmd.boundary_output.empty()) write_boundary_points(cmd.boundary_output, loaded.samples);
+  if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
   PointSet points;
   for (const auto& s : env.samples) {
     points.points.push_back(s.position);

@@ -1,6 +1,7 @@
 // `envcrust sample`: points or an exact tessellation of a built-in surface, and the list.
 #include "cli_common.h"
 #include "commands.h"
+#include "curve_output.h"
 
 #include "envcrust/io.h"
 #include "envcrust/surfaces.h"
@@ -87,17 +88,11 @@ void run_sample(const SampleCommand& cmd) {
     // All loops in one file, one point per line, loops separated by blank lines is not a
     // format our readers take back: write one file per loop instead (NAME.0.polyline, ...).
     const auto curves = surfaces::boundary_curves(*surface, 2e-3 * surfaces::bbox_diagonal(*surface));
+    const auto paths = numbered_paths(cmd.boundary_output, curves.size());
     nlohmann::json files = nlohmann::json::array();
     for (std::size_t i = 0; i < curves.size(); ++i) {
-      std::string path = cmd.boundary_output;
-      if (curves.size() > 1) {
-        const auto dot = path.find_last_of('.');
-        const std::string stem = dot == std::string::npos ? path : path.substr(0, dot);
-        const std::string ext = dot == std::string::npos ? ".polyline" : path.substr(dot);
-        path = stem + "." + std::to_string(i) + ext;
-      }
-      io::write_polyline(path, curves[i].polyline());
-      files.push_back(path);
+      io::write_polyline(paths[i], curves[i].polyline());
+      files.push_back(paths[i]);
     }
     report["boundary_files"] = files;
   }

@@ -7,6 +7,7 @@ namespace envcrust::cli {
 
 void register_sample(CLI::App& app);
 void register_analyze(CLI::App& app);
+void register_boundary(CLI::App& app);
 void register_reconstruct(CLI::App& app);
 void register_envelope(CLI::App& app);
 void register_powercrust(CLI::App& app);

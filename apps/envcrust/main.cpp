@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   envcrust::cli::register_sample(app);
   envcrust::cli::register_analyze(app);
   envcrust::cli::register_reconstruct(app);
+  envcrust::cli::register_boundary(app);
   envcrust::cli::register_envelope(app);
   envcrust::cli::register_powercrust(app);
   envcrust::cli::register_render(app);

@@ -120,46 +120,12 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
   return out;
 }
 
-}  // namespace
-
-LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress) {
-  LoadedSurface out;
-  if (!sampling.boundary_files.empty() && is_builtin_spec(spec))
-    throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
-  if (is_builtin_spec(spec)) {
-    const auto surface = surfaces::make_builtin(spec.substr(std::string("builtin:").size()));
-    surfaces::SampleOptions o;
-    o.count = sampling.count;
-    o.noise_rel_diag = sampling.noise_rel_diag;
-    o.seed = sampling.seed;
-    o.with_normals = true;
-    PointSet points = surfaces::sample_surface(*surface, o);
-    out.samples.points = std::move(points.points);
-    out.samples.normals = std::move(points.normals);
-    out.samples.boundary = surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface));
-    out.source = "builtin";
-    out.notes.push_back("exact normals and boundary curves of " + surface->name());
-    return out;
-  }
-  const std::string ext = io::extension_of(spec);
-  std::optional<TriangleMesh> mesh;
-  if (ext == "off" || ext == "obj" || ext == "stl") {
-    mesh = io::read_triangle_mesh(spec);
-  } else if (ext == "ply") {
-    try {  // a PLY file with faces is a mesh, without faces a point set
-      mesh = mesh::triangulate_polygons(io::read_polygon_mesh(spec));
-    } catch (const IoError&) {
-    }
-  }
-  if (mesh) {
-    if (!sampling.boundary_files.empty())
-      throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
-    load_mesh_samples(std::move(*mesh), spec, out);
-    return out;
-  }
-  // A point file's steps before the envelope take seconds on a million points.
-  progress.report("input: reading", 0.0);
-  PointSet points = usable_points(io::read_points(spec), spec, out.notes);
+// Samples of M from a point set read from `spec` (a file, or a built-in surface's samples):
+// usable points, normal lines from the set or by PCA, and boundary curves given, detected or
+// none.
+void load_point_samples(PointSet read, const std::string& spec, const BuiltinSampling& sampling,
+                        const Progress& progress, LoadedSurface& out) {
+  PointSet points = usable_points(std::move(read), spec, out.notes);
   out.source = "points";
   out.kind.is_builtin = false;
   if (points.has_normals()) {
@@ -195,13 +161,80 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
       out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                           std::to_string(detection.dropped_loops) + " short loops dropped)");
       out.samples.boundary = std::move(detection.curves);
-      out.detected_loop_widths = std::move(detection.loop_widths);
+      detection.curves.clear();
       out.min_loop_width = sampling.boundary.min_loop_width;
-      for (auto& w : detection.warnings) out.notes.push_back(std::move(w));
+      for (const auto& w : detection.warnings) out.notes.push_back(w);
+      out.detection = std::move(detection);
     }
   } catch (const DegenerateInput& e) {
     throw DegenerateInput(spec + ": " + e.what());
   }
+}
+
+}  // namespace
+
+CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
+  auto* given = sub.add_option("--boundary", sampling.boundary_files,
+                               "Point files: boundary points to use instead of detecting them (point files in any "
+                               "order or closed .polyline curves, repeatable, several loops; each point marks its "
+                               "nearest sample; normals, if every file has them, are outward conormals)");
+  sub.add_option("--boundary-min-width", sampling.boundary.min_loop_width,
+                 "Point files: drop detected loops narrower than this many local spacings "
+                 "(sampling gaps, not holes); 0 keeps all")
+      ->capture_default_str()
+      ->check(number_above(0, true));
+  sub.add_flag("--no-boundary-outer-fit", [&sampling](std::int64_t) { sampling.boundary.fit_to_outer_samples = false; },
+               "Point files: leave detected curves on the centre line of the flagged band instead of "
+               "moving them out to its outermost samples");
+  sub.add_flag("--no-boundary-inlet-closing",
+               [&sampling](std::int64_t) { sampling.boundary.close_narrow_inlets = false; },
+               "Point files: keep the narrow inlets that voids beside the rim cut into detected curves");
+  return given;
+}
+
+LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress) {
+  LoadedSurface out;
+  if (!sampling.boundary_files.empty() && is_builtin_spec(spec) && !sampling.builtin_as_points)
+    throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
+  if (is_builtin_spec(spec)) {
+    const auto surface = surfaces::make_builtin(spec.substr(std::string("builtin:").size()));
+    surfaces::SampleOptions o;
+    o.count = sampling.count;
+    o.noise_rel_diag = sampling.noise_rel_diag;
+    o.seed = sampling.seed;
+    o.with_normals = !sampling.builtin_as_points;
+    PointSet points = surfaces::sample_surface(*surface, o);
+    if (sampling.builtin_as_points) {
+      load_point_samples(std::move(points), spec, sampling, progress, out);
+      out.notes.push_back("sampled from " + surface->name() + " without its normals and boundary");
+      return out;
+    }
+    out.samples.points = std::move(points.points);
+    out.samples.normals = std::move(points.normals);
+    out.samples.boundary = surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface));
+    out.source = "builtin";
+    out.notes.push_back("exact normals and boundary curves of " + surface->name());
+    return out;
+  }
+  const std::string ext = io::extension_of(spec);
+  std::optional<TriangleMesh> mesh;
+  if (ext == "off" || ext == "obj" || ext == "stl") {
+    mesh = io::read_triangle_mesh(spec);
+  } else if (ext == "ply") {
+    try {  // a PLY file with faces is a mesh, without faces a point set
+      mesh = mesh::triangulate_polygons(io::read_polygon_mesh(spec));
+    } catch (const IoError&) {
+    }
+  }
+  if (mesh) {
+    if (!sampling.boundary_files.empty())
+      throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
+    load_mesh_samples(std::move(*mesh), spec, out);
+    return out;
+  }
+  // A point file's steps before the envelope take seconds on a million points.
+  progress.report("input: reading", 0.0);
+  load_point_samples(io::read_points(spec), spec, sampling, progress, out);
   progress.report("input", 1.0);
   return out;
 }

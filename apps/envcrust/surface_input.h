@@ -6,6 +6,8 @@
 #include "envcrust/envelope.h"
 #include "envcrust/pipeline.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -19,6 +21,9 @@ struct BuiltinSampling {
   double noise_rel_diag = 0.0;
   std::uint64_t seed = 1;
   bool detect_boundary = true;   ///< point files: find boundary curves (off: treat as closed)
+  /// builtin:NAME is sampled without its normals and boundary and then read as a point file
+  /// is (normal lines by PCA, boundary detected): what `envcrust boundary` measures.
+  bool builtin_as_points = false;
   /// Point files: boundary points given instead of detected, from point files or closed
   /// `.polyline` curves (all files together).
   std::vector<std::string> boundary_files;
@@ -35,12 +40,16 @@ struct LoadedSurface {
   /// normals estimated by PCA, and a mesh's own orientability and genus (handles and
   /// cross-caps summed over components; the envelope should not add any).
   pipeline::InputKind kind;
-  /// Point files whose boundary was detected: each curve's width in local spacings
-  /// (BoundaryDetection::loop_widths), and the --boundary-min-width the detection used.
-  std::vector<double> detected_loop_widths;
-  double min_loop_width = 0.0;
+  /// Point files whose boundary was detected: what the detector found besides the curves
+  /// (moved into samples.boundary): flagged points, widths, dropped loops, its spacing.
+  std::optional<boundary::BoundaryDetection> detection;
+  double min_loop_width = 0.0;  ///< the --boundary-min-width the detection used
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
 };
+
+/// Add the point-file boundary flags shared by reconstruct, envelope and boundary: --boundary,
+/// --boundary-min-width, --no-boundary-outer-fit. Returns the --boundary option.
+CLI::Option* add_boundary_options(CLI::App& command, BuiltinSampling& sampling);
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress = {});
 

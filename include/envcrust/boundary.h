@@ -89,6 +89,15 @@ struct BoundaryOptions {
   /// against 2 runs by 15% and 23% on the centre line).
   /// false: the curve stays on the centre line (mean offset about -0.8 s from the truth).
   bool fit_to_outer_samples = true;
+  /// Cut narrow inlets off the detected curves across their mouths: a random void in the
+  /// samples beside the rim is flagged like the rim, and the ordered band runs into it and
+  /// back out, leaving a slot in the result. An inlet: a section of the curve whose conormals
+  /// face into the loop it makes with the chord between its ends, at least 3 times as long as
+  /// that chord, and which with the chord is shorter than min_loop_length (the length below
+  /// which a loop of its own is dropped as a void). Measured on a point file of the cylinder
+  /// (10k points, 0.25% noise, seed 3): a void 3 spacings wide beside the top rim made a slot
+  /// 0.27 deep (7.6% of the diagonal) in the curve and in the result.
+  bool close_narrow_inlets = true;
   /// Output curve vertex spacing (arc length, absolute units, > 0); nullopt: spacing s.
   std::optional<double> curve_spacing;
   /// Move the output curves by this many s along their outward conormal, in [-5, 5], after
@@ -110,6 +119,8 @@ struct BoundaryDetection {
   std::vector<BoundaryCurve> curves;
   /// Linked components shorter than min_loop_length (scan holes, interior false positives).
   std::size_t dropped_loops = 0;
+  /// Narrow inlets cut off the curves (BoundaryOptions::close_narrow_inlets).
+  std::size_t closed_inlets = 0;
   /// Human-readable notes (curves closed across a gap, inconsistent conormals, ...).
   std::vector<std::string> warnings;
   /// The average spacing s of the cloud (k 6), the unit of the options.

@@ -161,4 +161,12 @@ void fit_to_outer_samples(BoundaryCurve& curve, const std::vector<Point3>& point
                           const Candidates& candidates, const std::vector<std::size_t>& component,
                           double spacing, double max_move);
 
+/// The curve with each narrow inlet cut off across its mouth: a section entered and left
+/// through a mouth at most 0.7 of the section's length, where the curve
+/// on either side runs the same way (conormals within 60 degrees: not the two sides of a
+/// narrow hole, not a corner), going in against that conormal (a void beside the rim, not a
+/// tongue of the surface), and which with its mouth is shorter than `max_loop_length`.
+/// Longest first, until none is left; adds the number cut to `closed` (inlets.cpp).
+Polyline close_inlets(const BoundaryCurve& curve, double max_loop_length, std::size_t& closed);
+
 }  // namespace envcrust::boundary::detail

@@ -3,6 +3,7 @@
 #include "boundary_detail.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 #include "envcrust/normals.h"
 
 #include <algorithm>
@@ -107,12 +108,6 @@ std::vector<Vector3> unit_normals(const std::vector<Point3>& points,
   return out;
 }
 
-double closed_length(const Polyline& curve) {
-  double length = 0.0;
-  for (std::size_t i = 0; i < curve.size(); ++i) length += detail::length(curve[(i + 1) % curve.size()] - curve[i]);
-  return length;
-}
-
 // 4 area / perimeter of a closed polyline (area = norm of its vector area): a disc's
 // diameter, about twice the width of a long slot.
 double loop_width(const Polyline& curve) {
@@ -210,6 +205,13 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     }
     Polyline curve = detail::resample_closed(line.points, s);
     curve = detail::smooth_closed(curve, options.smoothing_half_window);
+    if (drop_small && options.close_narrow_inlets) {
+      std::vector<std::string> unused;  // the final framing below warns
+      const BoundaryCurve framed = detail::frame_curve(curve, points, normals, index, candidates, component, 0, unused);
+      const std::size_t before = out.closed_inlets;
+      Polyline closed = detail::close_inlets(framed, options.min_loop_length * s, out.closed_inlets);
+      if (out.closed_inlets > before) curve = detail::resample_closed(closed, s);
+    }
     if (options.fit_to_outer_samples) {
       std::vector<std::string> unused;  // the final framing below warns
       BoundaryCurve fitted = detail::frame_curve(curve, points, normals, index, candidates, component, 0, unused);
@@ -238,7 +240,7 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     if (drop_small && beyond > options.max_sampled_beyond) {
       ++out.dropped_loops;
       const Point3& p = framed.vertices.front().position;
-      out.warnings.push_back("a loop of length " + format_number(closed_length(framed.polyline())) +
+      out.warnings.push_back("a loop of length " + format_number(mesh::closed_length(framed.polyline())) +
                              " near (" + format_number(p.x()) + ", " + format_number(p.y()) + ", " +
                              format_number(p.z()) + ") dropped: its conormals point out of it, but beyond " +
                              format_number(std::round(100 * beyond)) +

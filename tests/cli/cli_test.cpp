@@ -13,6 +13,7 @@
 #include <iomanip>
 #include <iterator>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ using envcrust::testing::run_envcrust_json;
 namespace fs = std::filesystem;
 
 TEST_F(CliTest, every_subcommand_has_help) {
-  for (const std::string sub : {"sample", "analyze", "reconstruct", "envelope", "powercrust", "render"}) {
+  for (const std::string sub : {"sample", "analyze", "reconstruct", "boundary", "envelope", "powercrust", "render"}) {
     const auto r = run_envcrust(sub + " --help");
     EXPECT_EQ(r.exit_code, 0) << sub;
     EXPECT_NE(r.out.find("--json"), std::string::npos) << sub;
@@ -874,4 +875,57 @@ TEST_F(CliTest, analyze_reports_faces_that_pass_through_each_other) {
   EXPECT_NE(text.out.find("\n  self-intersections: 1 pairs of faces pass through each other (2 faces), e.g. near ("),
             std::string::npos)
       << text.out;
+}
+
+// `envcrust boundary`: the detector alone, measured against the true boundary of a built-in
+// surface; its curves written as polylines or as one point file, which reconstruct reads back.
+TEST_F(CliTest, boundary_finds_the_cylinder_rims_and_writes_them_back) {
+  const auto j = run_envcrust_json("boundary builtin:cylinder --seed 3 -o " + path("rim.polyline") + " --points-out " +
+                                   path("band.xyz") + " --json");
+  ASSERT_EQ(j["curves"].size(), 2u);
+  ASSERT_EQ(j["reference"]["true_loops"].size(), 2u);
+  const double gap = j["reference"]["samples_gap"]["max_rel_diag"].get<double>();
+  std::set<int> matched;
+  for (const auto& t : j["reference"]["true_loops"]) {
+    matched.insert(t["nearest_curve"].get<int>());
+    // Each rim found within what the samples allow (the largest distance from the true rim
+    // to the nearest sample), with room for the curve's smoothing.
+    EXPECT_LT(t["hausdorff_rel_diag"].get<double>(), 1.1 * gap);
+  }
+  EXPECT_EQ(matched, (std::set<int>{0, 1}));
+  for (const auto& c : j["curves"]) {
+    EXPECT_EQ(c["knot"], "unknot");
+    EXPECT_NEAR(c["length"].get<double>(), 2 * M_PI, 0.05 * 2 * M_PI);
+    EXPECT_GT(c["width_local_spacings"].get<double>(), 20.0);
+  }
+  EXPECT_EQ(j["files"], (nlohmann::json{path("rim.0.polyline"), path("rim.1.polyline")}));
+  EXPECT_TRUE(fs::exists(path("band.xyz")));
+  EXPECT_GT(j["boundary_points"].get<int>(), 300);  // two rims of ~2 pi / 0.035 spacings each
+
+  // The same curves as one point file with conormals: reconstruct --boundary takes it back,
+  // and reconstruct --boundary-out writes .polyline files as boundary -o does.
+  ASSERT_EQ(run_envcrust("sample cylinder --seed 3 -q -o " + path("c.xyz")).exit_code, 0);
+  const auto k = run_envcrust_json("boundary " + path("c.xyz") + " -r builtin:cylinder -o " + path("rims.xyz") + " --json");
+  EXPECT_EQ(k["curves"].size(), 2u);
+  EXPECT_EQ(k["reference"]["file"], "builtin:cylinder");
+  const auto r = run_envcrust_json("reconstruct " + path("c.xyz") + " --boundary " + path("rims.xyz") + " -o " +
+                                   path("c.ply") + " --boundary-out " + path("used.polyline") + " --json");
+  EXPECT_EQ(r["input_boundary_curves"], 2);
+  EXPECT_EQ(r["analysis"]["boundary_loops"], 2);
+  EXPECT_TRUE(fs::exists(path("used.0.polyline")) && fs::exists(path("used.1.polyline")));
+
+  // Text report: one line per curve and per true loop.
+  const auto text = run_envcrust("boundary builtin:cylinder --seed 3");
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("builtin:cylinder: 10000 points, 2 boundary curves"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("  true loop 1: nearest curve "), std::string::npos) << text.out;
+
+  // Bad input: a missing file named, an output with an unknown extension refused before the run.
+  const auto missing = run_envcrust("boundary " + path("none.xyz"));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(missing.err.rfind("envcrust: error: " + path("none.xyz") + ":", 0), 0u) << missing.err;
+  const auto bad_out = run_envcrust("boundary " + path("c.xyz") + " -o " + path("x.off"));
+  EXPECT_EQ(bad_out.exit_code, 1);
+  EXPECT_NE(bad_out.err.find("unknown extension '.off'"), std::string::npos) << bad_out.err;
+  EXPECT_FALSE(fs::exists(path("x.off")));
 }
