@@ -342,6 +342,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"handle_balls", s.handle_balls},
                   {"faces_removed_at_handles", s.faces_removed_at_handles},
                   {"cut_holes_filled", s.cut_holes_filled},
+                  {"cut_notches_closed", s.cut_notches_closed},
                   {"self_intersections_found", s.self_intersections_found},
                   {"self_intersections_smoothed", s.self_intersections_smoothed},
                   {"faces_removed_at_self_intersections", s.faces_removed_at_self_intersections},

@@ -102,6 +102,13 @@ struct SheetOptions {
   /// use_fill_away_from_boundary) with a smooth disc (refined and faired triangulation of the
   /// hole), so a handle or cross-cap becomes a cap instead of a hole. False keeps the holes.
   bool fill_cut_holes = true;
+  /// With fill_cut_holes: a cut that reached the rim leaves a notch in it (a run of border
+  /// vertices off the boundary curve, more than 0.25 rho deep, at most 4 rho wide along the
+  /// curve), closed back to the curve with a smooth disc glued along the notch, its new border
+  /// on the curve. The topology stays. Measured on a point file of the cylinder (10k points,
+  /// 0.25% noise, seed 3): a fold at the bottom rim, cut out, left a notch 2.3% of the
+  /// diagonal deep.
+  bool close_cut_notches = true;
   /// Last: where faces pass through each other (folds that noise or a tight rim leave), relax
   /// the vertices there (smooth_self_intersections); where that is not enough, remove the
   /// faces within this radius (in rho, along the mesh) of them and close the holes away from
@@ -142,6 +149,8 @@ struct SheetStats {
   std::size_t faces_removed_at_handles = 0;
   /// SheetOptions::fill_cut_holes: holes left by the cuts closed with a disc.
   std::size_t cut_holes_filled = 0;
+  /// SheetOptions::close_cut_notches: notches in the rim closed back to the curves.
+  std::size_t cut_notches_closed = 0;
   /// SheetOptions::self_intersection_cut_rel_rho: intersecting face pairs found, those that
   /// relaxing the vertices opened, those left to the first cut, the cut rounds kept, the
   /// faces they removed, and the pairs left in the sheet.

@@ -21,6 +21,14 @@
 namespace envcrust::extract {
 namespace {
 
+// Notches a cut leaves in the rim (SheetOptions::close_cut_notches), in rho: border vertices
+// within kNotchOnCurve of a curve lie on it (snapped ones lie on it exactly); a notch reaches
+// kNotchMinDepth in (a cut ball of 0.5 rho, the self-intersection cut's, reaches about that
+// far), and spans at most kNotchMaxWidth along the curve (a handle ball of 1.5 rho: 3 rho).
+constexpr double kNotchOnCurve = 0.1;
+constexpr double kNotchMinDepth = 0.25;
+constexpr double kNotchMaxWidth = 4.0;
+
 void validate(const SheetOptions& o) {
   auto fail = [](const std::string& field, double value) {
     std::ostringstream s;
@@ -195,7 +203,14 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     if (!options.fill_cut_holes) return 0;
     if (drop_cut_off_pieces)
       result.stats.components_dropped += drop_pieces_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
-    return fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
+    const std::size_t filled = fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
+    // A cut that reached the rim opened a notch in it rather than a hole: closed back to the
+    // curve (a disc glued along an arc of the border: the topology stays).
+    if (options.close_cut_notches)
+      result.stats.cut_notches_closed += close_border_notches(sheet, surface, kNotchOnCurve * envelope.rho,
+                                                              kNotchMinDepth * envelope.rho,
+                                                              kNotchMaxWidth * envelope.rho);
+    return filled;
   };
   auto tidy_after_cut = [&]() -> std::string {
     result.stats.components_dropped +=

@@ -447,3 +447,113 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
 }
 
 }  // namespace envcrust::extract
+
+namespace envcrust::extract {
+namespace {
+
+// The point at arc length `arc` (taken modulo the curve's length) along curve c.
+Point3 point_at_arc(const BoundaryPolylines& b, std::size_t c, double arc) {
+  const double length = b.curve_length[c];
+  const std::size_t start = b.curve_start[c], size = b.curve_size[c];
+  arc = std::fmod(arc, length);
+  if (arc < 0) arc += length;
+  for (std::size_t k = 0; k < size; ++k) {
+    const double a0 = b.arc[start + k], a1 = k + 1 < size ? b.arc[start + k + 1] : length;
+    if (arc > a1 && k + 1 < size) continue;
+    const Point3& p = b.points[start + k];
+    const Point3& q = b.points[start + (k + 1) % size];
+    const double f = a1 > a0 ? std::clamp((arc - a0) / (a1 - a0), 0.0, 1.0) : 0.0;
+    return p + f * (q - p);
+  }
+  return b.points[start];
+}
+
+// Whether face f runs from a to b.
+bool runs(const std::array<Index, 3>& f, Index a, Index b) {
+  for (int k = 0; k < 3; ++k)
+    if (f[k] == a && f[(k + 1) % 3] == b) return true;
+  return false;
+}
+
+// The faces from `first` on (a patch) turned, if need be, so that the edge a-b, which one
+// face before `first` and one after share, runs opposite ways in them (one orientation).
+void orient_like_neighbour(TriangleMesh& m, std::size_t first, Index a, Index b) {
+  bool old_ab = false, new_ab = false;
+  for (std::size_t f = 0; f < m.triangles.size(); ++f) {
+    const bool has = runs(m.triangles[f], a, b) || runs(m.triangles[f], b, a);
+    if (!has) continue;
+    (f < first ? old_ab : new_ab) = runs(m.triangles[f], a, b);
+  }
+  if (old_ab != new_ab) return;
+  for (std::size_t f = first; f < m.triangles.size(); ++f) std::swap(m.triangles[f][1], m.triangles[f][2]);
+}
+
+}  // namespace
+
+std::size_t close_border_notches(TaggedMesh& t, const envelope::SurfaceSamples& surface, double on_curve,
+                                 double min_depth, double max_width) {
+  if (surface.boundary.empty()) return 0;
+  const BoundaryPolylines boundary = polylines_of(surface);
+  const NearestIndex index(boundary.points);
+  std::size_t closed = 0;
+  for (const auto& border : border_loops(t.mesh)) {
+    const std::vector<Index>& loop = border.vertices;
+    const std::size_t n = loop.size();
+    if (n < 4) continue;
+    std::vector<CurvePoint> onto(n);
+    std::vector<double> off(n);
+    std::size_t near = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      onto[k] = onto_boundary(t.mesh.vertices[loop[k]], boundary, index);
+      off[k] = std::sqrt(CGAL::squared_distance(t.mesh.vertices[loop[k]], onto[k].point));
+      near += off[k] <= on_curve;
+    }
+    // A loop along a curve (a hole away from the curves is the hole filling's), not all on it.
+    if (2 * near < n || near == n) continue;
+    std::size_t first = 0;
+    while (off[first] > on_curve) ++first;
+    // Each run of vertices off the curve between two on it: a notch if it reaches min_depth
+    // in and its ends lie on one curve within max_width of each other along it.
+    for (std::size_t step = 0; step < n;) {
+      const std::size_t u = (first + step) % n;
+      std::size_t len = 1;
+      while (len < n && off[(u + len) % n] > on_curve) ++len;
+      step += len;
+      if (len < 2) continue;
+      const std::size_t w = (u + len) % n;
+      double depth = 0.0;
+      for (std::size_t d = 1; d < len; ++d) depth = std::max(depth, off[(u + d) % n]);
+      const std::size_t c = onto[u].curve;
+      if (depth < min_depth || onto[w].curve != c) continue;
+      const double total = boundary.curve_length[c];
+      double forward = std::fmod(onto[u].arc - onto[w].arc, total);  // from w on to u
+      if (forward < 0) forward += total;
+      const double along = std::min(forward, total - forward), sign = forward <= total - forward ? 1.0 : -1.0;
+      if (along > max_width) continue;
+      // The notch's border, then back from its far end to its near end along the curve, at
+      // about the notch's own edge length.
+      double edges = 0.0;
+      for (std::size_t d = 0; d < len; ++d)
+        edges += std::sqrt(CGAL::squared_distance(t.mesh.vertices[loop[(u + d) % n]], t.mesh.vertices[loop[(u + d + 1) % n]]));
+      const auto inner = static_cast<std::size_t>(std::max(0.0, std::ceil(along / (edges / static_cast<double>(len))) - 1));
+      std::vector<Index> patch_loop;
+      for (std::size_t d = 0; d <= len; ++d) patch_loop.push_back(loop[(u + d) % n]);
+      const std::size_t old_size = t.mesh.vertices.size();
+      for (std::size_t q = 1; q <= inner; ++q) {
+        patch_loop.push_back(static_cast<Index>(t.mesh.vertices.size()));
+        t.mesh.vertices.push_back(point_at_arc(boundary, c, onto[w].arc + sign * along * static_cast<double>(q) /
+                                                                              static_cast<double>(inner + 1)));
+      }
+      const std::size_t old_faces = t.mesh.triangles.size();
+      if (fill_with_patch(t, patch_loop)) {
+        orient_like_neighbour(t.mesh, old_faces, patch_loop[0], patch_loop[1]);
+        ++closed;
+      } else {
+        t.mesh.vertices.resize(old_size);
+      }
+    }
+  }
+  return closed;
+}
+
+}  // namespace envcrust::extract

@@ -32,4 +32,13 @@ std::size_t trim_beyond_boundary(TaggedMesh& tagged, const envelope::SurfaceSamp
 ProjectionStats snap_border(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
                             double max_move, unsigned retry_rounds);
 
+/// Close the notches that a cut opened in the sheet's rim: along a border loop that mostly
+/// lies on a boundary curve (within `on_curve`), each run of vertices off it that reaches
+/// `min_depth` in, between two vertices on one curve at most `max_width` apart along it, is
+/// filled with a smooth disc (fill_with_patch) bounded by the run and the stretch of curve
+/// between its ends, which becomes the border there. The disc is glued along an arc of the
+/// border, so the topology is unchanged. Returns the number of notches closed.
+std::size_t close_border_notches(TaggedMesh& tagged, const envelope::SurfaceSamples& surface, double on_curve,
+                                 double min_depth, double max_width);
+
 }  // namespace envcrust::extract
