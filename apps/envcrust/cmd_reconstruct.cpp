@@ -348,6 +348,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
                   {"faces_removed_at_self_intersections", s.faces_removed_at_self_intersections},
                   {"self_intersections_cut", s.self_intersections_cut},
                   {"self_intersection_cut_rounds", s.self_intersection_cut_rounds},
+                  {"self_intersection_cut_widenings", s.self_intersection_cut_widenings},
                   {"self_intersections_left", s.self_intersections_left},
                   {"self_intersection_cut_rel_rho", cmd.options.sheet.self_intersection_cut_rel_rho},
                   {"cut_to_orientable", cmd.options.sheet.cut_to_orientable},

@@ -116,7 +116,8 @@ struct SheetOptions {
   double self_intersection_cut_rel_rho = 0.5;
   /// Cut rounds: after each, the faces the cut's repairs and discs made are checked, relaxed
   /// and cut again where they pass through the sheet; a round that leaves no fewer pairs than
-  /// it found is undone and ends the cutting. >= 1.
+  /// it found is undone and tried again with twice the radius, up to 4 times
+  /// self_intersection_cut_rel_rho, then ends the cutting. >= 1.
   int self_intersection_cut_rounds = 3;
 };
 
@@ -149,6 +150,8 @@ struct SheetStats {
   std::size_t faces_removed_at_handles = 0;
   /// SheetOptions::fill_cut_holes: holes left by the cuts closed with a disc.
   std::size_t cut_holes_filled = 0;
+  /// Self-intersection cut rounds undone and retried with twice the radius.
+  std::size_t self_intersection_cut_widenings = 0;
   /// SheetOptions::close_cut_notches: notches in the rim closed back to the curves.
   std::size_t cut_notches_closed = 0;
   /// SheetOptions::self_intersection_cut_rel_rho: intersecting face pairs found, those that

@@ -28,6 +28,10 @@ namespace {
 constexpr double kNotchOnCurve = 0.1;
 constexpr double kNotchMinDepth = 0.25;
 constexpr double kNotchMaxWidth = 4.0;
+// A self-intersection cut round that leaves no fewer pairs is retried with twice the radius,
+// up to this many times the first radius. Measured on the face scan's points (fifth session):
+// at 0.5 rho a round left its 84 pairs, at 1 rho none.
+constexpr double kMaxCutWidening = 4.0;
 
 void validate(const SheetOptions& o) {
   auto fail = [](const std::string& field, double value) {
@@ -287,10 +291,14 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       const int max_rounds = std::max(1, options.self_intersection_cut_rounds);
       std::size_t removed = 0;
       int rounds = 0;
+      // A round that leaves no fewer pairs is tried again with twice the radius (the discs
+      // closing a small cut can pass through the folds around it; a wider cut takes them in),
+      // up to kMaxCutWidening times the radius.
+      double radius = options.self_intersection_cut_rel_rho * envelope.rho;
+      const double max_radius = kMaxCutWidening * radius;
       while (found.face_pairs > 0 && rounds < max_rounds) {
         TaggedMesh previous = sheet;
-        const std::size_t removed_now =
-            cut_self_intersections(sheet, found, options.self_intersection_cut_rel_rho * envelope.rho).faces_removed;
+        const std::size_t removed_now = cut_self_intersections(sheet, found, radius).faces_removed;
         tidy_after_cut();
         if (4 * sheet.mesh.triangles.size() < 3 * faces_at_start) {
           sheet = std::move(previous);
@@ -305,7 +313,10 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
             smooth_self_intersections(sheet.mesh, mesh::self_intersections(sheet.mesh, 0, &made), 3);
         if (left.face_pairs >= found.face_pairs) {
           sheet = std::move(previous);
-          break;
+          if (2 * radius > max_radius) break;
+          radius *= 2;
+          ++result.stats.self_intersection_cut_widenings;
+          continue;
         }
         found = std::move(left);
         removed += removed_now;

@@ -526,9 +526,19 @@ std::size_t close_border_notches(TaggedMesh& t, const envelope::SurfaceSamples& 
       const std::size_t c = onto[u].curve;
       if (depth < min_depth || onto[w].curve != c) continue;
       const double total = boundary.curve_length[c];
-      double forward = std::fmod(onto[u].arc - onto[w].arc, total);  // from w on to u
-      if (forward < 0) forward += total;
-      const double along = std::min(forward, total - forward), sign = forward <= total - forward ? 1.0 : -1.0;
+      // Which way the border runs along the curve on either side of the notch: the stretch
+      // it misses goes from w back to u against that way (the other way round the curve is
+      // the part the border follows).
+      auto way = [&](std::size_t from, std::size_t to) {
+        if (off[from] > on_curve || off[to] > on_curve || onto[from].curve != c || onto[to].curve != c) return 0.0;
+        const double d = std::remainder(onto[to].arc - onto[from].arc, total);
+        return d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
+      };
+      const double runs_on = way(w, (w + 2) % n);
+      if (runs_on == 0.0 || way((u + n - 2) % n, u) != runs_on) continue;
+      double along = std::fmod(runs_on * (onto[w].arc - onto[u].arc), total);  // from w back to u
+      if (along < 0) along += total;
+      const double sign = -runs_on;
       if (along > max_width) continue;
       // The notch's border, then back from its far end to its near end along the curve, at
       // about the notch's own edge length.
