@@ -91,9 +91,11 @@ struct BoundaryOptions {
   bool fit_to_outer_samples = true;
   /// Cut narrow inlets off the detected curves across their mouths: a random void in the
   /// samples beside the rim is flagged like the rim, and the ordered band runs into it and
-  /// back out, leaving a slot in the result. An inlet: a section of the curve whose conormals
-  /// face into the loop it makes with the chord between its ends, at least 3 times as long as
-  /// that chord, and which with the chord is shorter than min_loop_length (the length below
+  /// back out, leaving a slot in the result. An inlet: a section of the curve entered and left
+  /// through a mouth (the chord between its ends) at most 0.7 of its length, where the curve
+  /// on either side runs the same way (conormals within 60 degrees: not the two sides of a
+  /// narrow hole, not an inner corner), going in against that conormal (not a tongue of the
+  /// surface), and which with its mouth is shorter than min_loop_length (the length below
   /// which a loop of its own is dropped as a void). Measured on a point file of the cylinder
   /// (10k points, 0.25% noise, seed 3): a void 3 spacings wide beside the top rim made a slot
   /// 0.27 deep (7.6% of the diagonal) in the curve and in the result.
