@@ -15,6 +15,11 @@ constexpr double kMaxMouthRelArc = 0.7;
 // The conormals on either side of an inlet's mouth must agree this well (cos 60 degrees).
 constexpr double kMinMouthConormalDot = 0.5;
 
+// The section's vertices lie on average at least this fraction of the mouth in from it (a
+// semicircular bay's read 0.32): a stretch of a tube's rim, whose conormals all point along
+// the tube, is no inlet however round it runs.
+constexpr double kMinMeanDepthRelMouth = 0.15;
+
 struct Inlet {
   std::size_t first = 0;  ///< the mouth's two vertices: first, and first + span (cyclic)
   std::size_t span = 0;
@@ -57,8 +62,8 @@ std::optional<Inlet> longest_inlet(const BoundaryCurve& curve, double max_loop_l
       const Vector3 out = unit(before + after);
       const Point3 mid = a + 0.5 * (b - a);
       double depth = 0.0;
-      for (std::size_t d = 1; d < span; ++d) depth += dot(curve.vertices[(i + d) % m].position - mid, out);
-      if (depth < 0) best = Inlet{i, span, arc};
+      for (std::size_t d = 1; d < span; ++d) depth -= dot(curve.vertices[(i + d) % m].position - mid, out);
+      if (depth >= kMinMeanDepthRelMouth * mouth * static_cast<double>(span - 1)) best = Inlet{i, span, arc};
     }
   }
   return best;
