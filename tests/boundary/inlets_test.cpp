@@ -94,3 +94,30 @@ TEST(Inlets, AnInnerCornerIsNoInlet) {
 
 }  // namespace
 }  // namespace envcrust
+
+namespace envcrust {
+namespace {
+
+// The rim of a thin tube (a circle of radius 0.3 about z = 0, 19 vertices 0.1 apart) whose
+// conormals all point along the tube (+z): every stretch of it passes the conormal test and a
+// half circle's mouth is 0.64 of its arc, but none lies inward of its mouth: nothing is cut.
+TEST(Inlets, AThinTubesRimIsNoInlet) {
+  BoundaryCurve curve;
+  const int n = 19;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * M_PI * k / n;
+    BoundaryVertex v;
+    v.position = Point3(0.3 * std::cos(a), 0.3 * std::sin(a), 0.003 * std::cos(3 * a));  // a little noise
+    v.tangent = Vector3(-std::sin(a), std::cos(a), 0);
+    v.normal = Vector3(std::cos(a), std::sin(a), 0);
+    v.conormal = Vector3(0, 0, 1);
+    curve.vertices.push_back(v);
+  }
+  std::size_t closed = 0;
+  const Polyline out = boundary::detail::close_inlets(curve, 10.0, closed);
+  EXPECT_EQ(closed, 0u);
+  EXPECT_EQ(out.size(), curve.vertices.size());
+}
+
+}  // namespace
+}  // namespace envcrust
