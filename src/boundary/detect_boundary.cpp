@@ -7,6 +7,7 @@
 #include "envcrust/normals.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
@@ -205,16 +206,23 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     }
     Polyline curve = detail::resample_closed(line.points, s);
     curve = detail::smooth_closed(curve, options.smoothing_half_window);
-    if (drop_small && options.close_narrow_inlets) {
+    // Framed once for the inlets and the fit; again only when an inlet was cut off.
+    std::optional<BoundaryCurve> unfitted;
+    auto frame = [&] {
       std::vector<std::string> unused;  // the final framing below warns
-      const BoundaryCurve framed = detail::frame_curve(curve, points, normals, index, candidates, component, 0, unused);
+      return detail::frame_curve(curve, points, normals, index, candidates, component, 0, unused);
+    };
+    if (drop_small && options.close_narrow_inlets) {
+      unfitted = frame();
       const std::size_t before = out.closed_inlets;
-      Polyline closed = detail::close_inlets(framed, options.min_loop_length * s, out.closed_inlets);
-      if (out.closed_inlets > before) curve = detail::resample_closed(closed, s);
+      Polyline closed = detail::close_inlets(*unfitted, options.min_loop_length * s, out.closed_inlets);
+      if (out.closed_inlets > before) {
+        curve = detail::resample_closed(closed, s);
+        unfitted.reset();
+      }
     }
     if (options.fit_to_outer_samples) {
-      std::vector<std::string> unused;  // the final framing below warns
-      BoundaryCurve fitted = detail::frame_curve(curve, points, normals, index, candidates, component, 0, unused);
+      BoundaryCurve fitted = unfitted ? std::move(*unfitted) : frame();
       detail::fit_to_outer_samples(fitted, points, candidates, component, s, kMaxOuterFit * s);
       curve = fitted.polyline();
     }

@@ -446,9 +446,6 @@ ProjectionStats snap_border(TaggedMesh& t, const envelope::SurfaceSamples& surfa
   return stats;
 }
 
-}  // namespace envcrust::extract
-
-namespace envcrust::extract {
 namespace {
 
 // The point at arc length `arc` (taken modulo the curve's length) along curve c.
