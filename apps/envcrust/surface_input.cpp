@@ -186,6 +186,10 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
   sub.add_flag("--no-boundary-outer-fit", [&sampling](std::int64_t) { sampling.boundary.fit_to_outer_samples = false; },
                "Point files: leave detected curves on the centre line of the flagged band instead of "
                "moving them out to its outermost samples");
+  sub.add_flag("--boundary-take-in",
+               [&sampling](std::int64_t) { sampling.boundary.take_in_samples_beyond = true; },
+               "Point files: bulge detected curves out past samples still beyond them (lone samples on the "
+               "rim beside a void), instead of leaving those outside");
   sub.add_flag("--no-boundary-inlet-closing",
                [&sampling](std::int64_t) { sampling.boundary.close_narrow_inlets = false; },
                "Point files: keep the narrow inlets that voids beside the rim cut into detected curves");

@@ -156,10 +156,12 @@ BoundaryCurve frame_curve(const Polyline& curve, const std::vector<Point3>& poin
 /// samples beside it (within `spacing` along the tangent and of the tangent plane, their
 /// conormals within 60 degrees of the vertex's), less 1.5 times the samples' median scatter
 /// across the tangent plane (noise), as a median over the vertex and two neighbours on either
-/// side, limited to `max_move` either way; vertices with no such sample stay (outer_fit.cpp).
-void fit_to_outer_samples(BoundaryCurve& curve, const std::vector<Point3>& points,
+/// side, limited to `max_move` either way; vertices with no such sample stay. Then, with
+/// `take_in`, any sample of `points` (`index` over them) still beyond the curve where it runs
+/// straight, by more than 3 scatters, is taken in: the curve bulges out past it (outer_fit.cpp).
+void fit_to_outer_samples(BoundaryCurve& curve, const std::vector<Point3>& points, const PointIndex& index,
                           const Candidates& candidates, const std::vector<std::size_t>& component,
-                          double spacing, double max_move);
+                          double spacing, double max_move, bool take_in);
 
 /// The curve with each narrow inlet cut off across its mouth: a section entered and left
 /// through a mouth at most 0.7 of the section's length, where the curve

@@ -223,7 +223,8 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     }
     if (options.fit_to_outer_samples) {
       BoundaryCurve fitted = unfitted ? std::move(*unfitted) : frame();
-      detail::fit_to_outer_samples(fitted, points, candidates, component, s, kMaxOuterFit * s);
+      detail::fit_to_outer_samples(fitted, points, index, candidates, component, s, kMaxOuterFit * s,
+                                   options.take_in_samples_beyond);
       curve = fitted.polyline();
     }
     curve = detail::resample_closed(detail::remove_switchbacks(curve), output_spacing);

@@ -485,6 +485,9 @@ void orient_like_neighbour(TriangleMesh& m, std::size_t first, Index a, Index b)
   for (std::size_t f = first; f < m.triangles.size(); ++f) std::swap(m.triangles[f][1], m.triangles[f][2]);
 }
 
+// How many vertices on either side of a notch, along the curve, tell which way the border runs.
+constexpr std::size_t kNotchSideVertices = 8;
+
 }  // namespace
 
 std::size_t close_border_notches(TaggedMesh& t, const envelope::SurfaceSamples& surface, double on_curve,
@@ -531,8 +534,13 @@ std::size_t close_border_notches(TaggedMesh& t, const envelope::SurfaceSamples& 
         const double d = std::remainder(onto[to].arc - onto[from].arc, total);
         return d > 0 ? 1.0 : d < 0 ? -1.0 : 0.0;
       };
-      const double runs_on = way(w, (w + 2) % n);
-      if (runs_on == 0.0 || way((u + n - 2) % n, u) != runs_on) continue;
+      // Over up to kNotchSideVertices on either side while they stay on the curve: a border
+      // that steps back a vertex or two beside the notch still runs on the same way.
+      std::size_t after = 0, before = 0;
+      while (after < kNotchSideVertices && off[(w + after + 1) % n] <= on_curve) ++after;
+      while (before < kNotchSideVertices && off[(u + n - before - 1) % n] <= on_curve) ++before;
+      const double runs_on = way(w, (w + after) % n);
+      if (runs_on == 0.0 || after < 2 || before < 2 || way((u + n - before) % n, u) != runs_on) continue;
       double along = std::fmod(runs_on * (onto[w].arc - onto[u].arc), total);  // from w back to u
       if (along < 0) along += total;
       const double sign = -runs_on;

@@ -93,4 +93,32 @@ TEST(SheetNotches, ANotchWiderThanAllowedStays) {
   EXPECT_EQ(t.mesh.triangles.size(), faces);
 }
 
+
+// The border steps back along the curve beside the notch (a vertex two before it moved past
+// the last one on the curve, as a cut and its disc can leave it): which way the border runs
+// is read over several vertices either side, so the notch is still closed.
+TEST(SheetNotches, ABorderSteppingBackBesideTheNotchIsStillClosed) {
+  TaggedMesh t = notched_square(0.3);
+  // The top edge's vertices on the border left of the notch: the last one on the curve (u),
+  // and the one two before it, moved just past u.
+  const auto loops = topology::boundary_loops(t.mesh);
+  ASSERT_EQ(loops.size(), 1u);
+  double last_x = -1.0;
+  for (const Index v : loops[0].vertices) {
+    const Point3& p = t.mesh.vertices[v];
+    if (p.y() == 2.0 && p.x() < 1.0) last_x = std::max(last_x, p.x());
+  }
+  ASSERT_GT(last_x, 0.5);
+  Point3* moved = nullptr;
+  for (Point3& p : t.mesh.vertices)
+    if (p.y() == 2.0 && std::abs(p.x() - (last_x - 0.1)) < 1e-9) moved = &p;
+  ASSERT_NE(moved, nullptr);
+  *moved = Point3(last_x + 0.01, 2.0, 0.0);
+  EXPECT_EQ(close_border_notches(t, square_boundary(), 0.01, 0.1, 1.0), 1u);
+  const auto after = topology::analyze_topology(t.mesh);
+  EXPECT_EQ(after.euler_characteristic, 1);
+  EXPECT_EQ(after.boundary_loops.size(), 1u);
+  EXPECT_LT(farthest_border_vertex_from_square_outline(t.mesh), 1e-9);
+}
+
 }  // namespace
