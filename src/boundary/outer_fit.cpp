@@ -24,8 +24,8 @@ constexpr double kNoiseAllowance = 1.5;
 constexpr double kStraightCos = 0.866;
 
 // ... and when it lies more than this many noise allowances out (3 scatters): 1 (1.5
-// scatters) took in the noise's outliers too and left the noisy unknot
-// ribbon's result 0.62% of the diagonal beyond the surface (seed 1; 0.33% with 2).
+// scatters) took in the noise's outliers too and left the noisy unknot ribbon's result 0.62%
+// of the diagonal beyond the surface (seed 1; 0.33% with 2).
 constexpr double kCoverNoise = 2.0;
 
 // ... and when the curve must move at least this many spacings further out for it: smaller
