@@ -97,8 +97,8 @@ struct BoundaryOptions {
   /// diagonal on average, up to 0.43% (the clean square, seed 3: 1.88% -> 1.45%, bar 1.86%),
   /// while mesh to truth rose by 0.005% on average. Off by default: on the real scans the
   /// results moved both ways (the bunny 2.27% -> 1.51% truth to mesh but 103 crossings left
-  /// at its ear tips; bun045 1.77% -> 4.33%), far from where the curves moved: a scan's sheet
-  /// comes out differently from any small change of the envelope's rim samples.
+  /// at its ear tips; bun045 1.77% -> 4.33%), far from where the curves moved: an
+  /// undersampled scan's sheet comes out differently from small changes at its rim.
   bool take_in_samples_beyond = false;
   /// Cut narrow inlets off the detected curves across their mouths: a random void in the
   /// samples beside the rim is flagged like the rim, and the ordered band runs into it and

@@ -363,7 +363,6 @@ TEST(DetectBoundary, DensePatchRimIsNoBoundaryButAHoleIs) {
   EXPECT_NE(dropped->find("% of it the surface goes on (the rim of a densely sampled patch, not a boundary)"), std::string::npos) << *dropped;
 }
 
-
 // How far a point of the plane z = 0 lies outside a closed curve in it: 0 inside, else its
 // distance to the curve.
 double outside_of(const Polyline& curve, const Point3& p) {

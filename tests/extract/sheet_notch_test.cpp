@@ -93,7 +93,6 @@ TEST(SheetNotches, ANotchWiderThanAllowedStays) {
   EXPECT_EQ(t.mesh.triangles.size(), faces);
 }
 
-
 // The border steps back along the curve beside the notch (a vertex two before it moved past
 // the last one on the curve, as a cut and its disc can leave it): which way the border runs
 // is read over several vertices either side, so the notch is still closed.
