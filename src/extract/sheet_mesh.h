@@ -130,7 +130,9 @@ OrientableCutStats cut_to_orientable(TaggedMesh& tagged, double radius,
 
 /// Where faces pass through each other (`found`, mesh::self_intersections of `mesh`), relax the vertices of
 /// those faces and two rings around them (three umbrella steps; border vertices move along
-/// the border only); repeat up to `rounds` times while any pair is left. Returns the pairs
+/// the border only); repeat up to `rounds` times while any pair is left. When the last round
+/// leaves more pairs than an earlier state (relaxing one fold can push the sheet through a
+/// neighbouring one), the positions go back to the state with the fewest. Returns the pairs
 /// left (each round re-checks only the faces that moved). The folds that noise or the border snap leave open this way without losing faces.
 mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::SelfIntersections found, int rounds);
 

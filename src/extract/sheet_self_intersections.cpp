@@ -25,8 +25,16 @@ mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::Self
     neighbours[a].push_back(b), neighbours[b].push_back(a);
     if (g.face_count_of_edge(e) == 1) border[a].push_back(b), border[b].push_back(a);
   }
+  // The positions after the round that left the fewest pairs (relaxing one fold can push the
+  // sheet through a neighbouring one): a relaxation that ends with more is taken back to them.
+  std::vector<Point3> best_vertices = mesh.vertices;
+  mesh::SelfIntersections best = found;
   for (int round = 0;; ++round) {
-    if (found.face_pairs == 0 || round == rounds) return found;
+    if (found.face_pairs == 0 || round == rounds) {
+      if (found.face_pairs <= best.face_pairs) return found;
+      mesh.vertices = std::move(best_vertices);
+      return best;
+    }
     std::vector<char> in_region(mesh.vertices.size(), 0);
     std::vector<Index> region;
     for (const Index f : found.face_list)
@@ -61,6 +69,10 @@ mesh::SelfIntersections smooth_self_intersections(TriangleMesh& mesh, mesh::Self
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
       for (const Index v : mesh.triangles[f]) moved_face[f] |= in_region[v];
     found = mesh::self_intersections(mesh, 0, &moved_face);
+    if (found.face_pairs < best.face_pairs) {
+      best = found;
+      best_vertices = mesh.vertices;
+    }
   }
 }
 
