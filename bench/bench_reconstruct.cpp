@@ -3,15 +3,16 @@
 //   envcrust_bench_reconstruct [--sizes 10000,100000,1000000] [--surfaces trefoil-ribbon,moebius]
 //                              [--point-clouds]
 // Peak MB: the largest resident size during the reconstruction (VmHWM, reset before it).
-// --point-clouds: the samples lose their exact normals and boundary, which are estimated
-// (PCA normal lines, detected boundary; timed apart) and reconstructed with the settings
-// `reconstruct` uses for a point file (pipeline::options_for_input).
+// --point-clouds: the samples lose their exact normals and boundary; as `reconstruct` does for
+// a point file, stray samples are removed, normal lines estimated by PCA and the boundary
+// detected (each timed apart), and the settings are pipeline::options_for_input's.
 #include "peak_memory.h"
 
 #include "envcrust/boundary.h"
 #include "envcrust/extract.h"
 #include "envcrust/heap.h"
 #include "envcrust/normals.h"
+#include "envcrust/outliers.h"
 #include "envcrust/pipeline.h"
 #include "envcrust/surfaces.h"
 
@@ -57,9 +58,9 @@ int main(int argc, char** argv) {
   input.is_builtin = !point_clouds;
   input.are_normals_estimated = point_clouds;
   const auto options = pipeline::options_for_input(input);
-  std::printf("| surface | input points | normals s | boundary s | envelope samples | envelope s | sheet s | total s | "
-              "bare DT s | ratio | peak MB |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| surface | input points | outliers s | normals s | boundary s | envelope samples | envelope s | sheet s | "
+              "total s | bare DT s | ratio | peak MB |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& name : names) {
     const auto surface = surfaces::make_builtin(name);
     for (const auto& size : sizes) {
@@ -69,10 +70,17 @@ int main(int argc, char** argv) {
       const PointSet ps = surfaces::sample_surface(*surface, o);
       envelope::SurfaceSamples samples{ps.points, ps.normals,
                                        surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface))};
-      double normals_s = 0.0, boundary_s = 0.0;
+      double outliers_s = 0.0, normals_s = 0.0, boundary_s = 0.0;
       bench::take_peak_mb();  // the peak below is the reconstruction's, sampling excluded
       auto t0 = std::chrono::steady_clock::now();
       if (point_clouds) {
+        const auto strays = outliers::find_outliers(samples.points);
+        std::vector<Point3> kept;
+        for (std::size_t i = 0; i < samples.points.size(); ++i)
+          if (!strays.is_outlier[i]) kept.push_back(samples.points[i]);
+        samples.points = std::move(kept);
+        outliers_s = seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
         samples.normals = normals::estimate_normal_lines(samples.points);
         normals_s = seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
@@ -81,14 +89,14 @@ int main(int argc, char** argv) {
         t0 = std::chrono::steady_clock::now();
       }
       const auto result = pipeline::reconstruct(samples, options);
-      const double total = seconds_since(t0) + normals_s + boundary_s;
+      const double total = seconds_since(t0) + outliers_s + normals_s + boundary_s;
       const double peak = bench::take_peak_mb();
       const auto points = result.envelope.points();
       t0 = std::chrono::steady_clock::now();
       CGAL::Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
       const double bare = seconds_since(t0);
-      std::printf("| %s | %s | %.2f | %.2f | %zu | %.2f | %.2f | %.2f | %.2f | %.1f× | %.0f |\n", name.c_str(),
-                  size.c_str(), normals_s, boundary_s, points.size(), result.seconds.envelope,
+      std::printf("| %s | %s | %.2f | %.2f | %.2f | %zu | %.2f | %.2f | %.2f | %.2f | %.1f× | %.0f |\n", name.c_str(),
+                  size.c_str(), outliers_s, normals_s, boundary_s, points.size(), result.seconds.envelope,
                   result.seconds.extraction, total, bare, total / bare, peak);
       std::fflush(stdout);
     }

@@ -204,6 +204,7 @@ void register_boundary(CLI::App& app) {
       ->check(number_above(0, true));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();
   add_boundary_options(*sub, cmd->sampling);
+  add_outlier_options(*sub, cmd->sampling);
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_boundary(*cmd); });
 }

@@ -33,6 +33,7 @@ struct ReconstructCommand {
   std::string rho = "auto";
   std::string envelope_output;
   std::string boundary_output;
+  std::string outliers_output;
   std::string reference;
   std::string report_file;
   bool no_analysis = false;
@@ -114,6 +115,16 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "Also write the boundary curves used (detected or read): .polyline, one closed curve "
                  "per file (FILE.i.polyline when several), or .xyz/.ply, all vertices as one point file "
                  "(normals = outward conormals)");
+  add_outlier_options(sub, cmd.sampling);
+  sub.add_option("--outliers-out", cmd.outliers_output,
+                 "Also write the stray samples removed from a point file (.xyz/.ply; none: an empty file)");
+}
+
+void write_outliers(const ReconstructCommand& cmd, const LoadedSurface& loaded) {
+  if (cmd.outliers_output.empty()) return;
+  PointSet removed;
+  removed.points = loaded.outliers;
+  io::write_points(cmd.outliers_output, removed);
 }
 
 nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
@@ -280,10 +291,12 @@ void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   io::check_output_path(cmd.output, output_kind);
   if (!cmd.envelope_output.empty()) io::check_output_path(cmd.envelope_output, io::OutputKind::Points);
   if (!cmd.boundary_output.empty()) check_curve_output(cmd.boundary_output);
+  if (!cmd.outliers_output.empty()) io::check_output_path(cmd.outliers_output, io::OutputKind::Points);
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
   check_distinct_outputs({{"-o", cmd.output},
                           {"--envelope-out", cmd.envelope_output},
                           {"--boundary-out", cmd.boundary_output},
+                          {"--outliers-out", cmd.outliers_output},
                           {"--report", cmd.report_file}});
 }
 
@@ -306,6 +319,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   nlohmann::json j = {{"input", cmd.input}, {"output", cmd.output}, {"source", loaded.source},
                       {"input_points", loaded.samples.points.size()},
                       {"input_boundary_curves", loaded.samples.boundary.size()},
+                      {"input_outliers_removed", loaded.outliers.size()},
                       {"notes", loaded.notes}};
   j["method"] = cmd.options.method == pipeline::Method::Envelope ? "envelope" : "powercrust";
   if (cmd.options.method == pipeline::Method::Envelope) {
@@ -432,6 +446,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     io::write_points(cmd.envelope_output, env);
   }
   if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
+  write_outliers(cmd, loaded);
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, report_text);
   if (cmd.common.json) {
     print_json(j);
@@ -492,6 +507,7 @@ void run_envelope(ReconstructCommand& cmd) {
   progress.report("envelope", 1.0);
   if (env.samples.empty()) throw NumericalFailure(empty_result_reason(cmd, loaded, env, "the envelope has no samples"));
   if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
+  write_outliers(cmd, loaded);
   PointSet points;
   for (const auto& s : env.samples) {
     points.points.push_back(s.position);

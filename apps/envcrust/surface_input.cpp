@@ -9,6 +9,7 @@
 #include "envcrust/boundary.h"
 #include "envcrust/mesh.h"
 #include "envcrust/normals.h"
+#include "envcrust/outliers.h"
 #include "envcrust/surfaces.h"
 #include "envcrust/topology.h"
 
@@ -127,6 +128,24 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
                         const Progress& progress, LoadedSurface& out) {
   PointSet points = usable_points(std::move(read), spec, out.notes);
   out.source = "points";
+  if (sampling.remove_outliers) {
+    progress.report("input: outliers", 0.1);
+    const auto found = outliers::find_outliers(points.points);
+    if (found.count() > 0) {
+      PointSet kept;
+      for (std::size_t i = 0; i < points.points.size(); ++i) {
+        if (found.is_outlier[i]) {
+          out.outliers.push_back(points.points[i]);
+          continue;
+        }
+        kept.points.push_back(points.points[i]);
+        if (points.has_normals()) kept.normals.push_back(points.normals[i]);
+      }
+      points = std::move(kept);
+      out.notes.push_back(std::to_string(found.count()) + " outliers removed (" + std::to_string(found.off_plane) +
+                          " off their neighbours' plane, " + std::to_string(found.isolated) + " isolated)");
+    }
+  }
   out.kind.is_builtin = false;
   if (points.has_normals()) {
     out.notes.push_back("normal lines from the file");
@@ -194,6 +213,13 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
                [&sampling](std::int64_t) { sampling.boundary.close_narrow_inlets = false; },
                "Point files: keep the narrow inlets that voids beside the rim cut into detected curves");
   return given;
+}
+
+void add_outlier_options(CLI::App& sub, BuiltinSampling& sampling) {
+  sub.add_flag("--keep-outliers", [&sampling](std::int64_t) { sampling.remove_outliers = false; },
+               "Point files: keep the stray samples that are otherwise removed first (points off the plane of "
+               "their 16 nearest neighbours by half their distance and 8 times the residual there, or 4 times "
+               "farther from them than those are from theirs)");
 }
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress) {

@@ -28,6 +28,8 @@ struct BuiltinSampling {
   /// `.polyline` curves (all files together).
   std::vector<std::string> boundary_files;
   boundary::BoundaryOptions boundary;  ///< point files: options of the boundary detector
+  /// Point files: drop the stray samples outliers::find_outliers flags before anything else.
+  bool remove_outliers = true;
 };
 
 /// Samples of M and how they were obtained (for the report). Point files get their normal
@@ -45,11 +47,16 @@ struct LoadedSurface {
   std::optional<boundary::BoundaryDetection> detection;
   double min_loop_width = 0.0;  ///< the --boundary-min-width the detection used
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
+  /// Point files: the stray samples removed (see BuiltinSampling::remove_outliers).
+  std::vector<Point3> outliers;
 };
 
 /// Add the point-file boundary flags shared by reconstruct, envelope and boundary: --boundary,
 /// --boundary-min-width, --no-boundary-outer-fit. Returns the --boundary option.
 CLI::Option* add_boundary_options(CLI::App& command, BuiltinSampling& sampling);
+
+/// Add --keep-outliers (point files: keep the samples find_outliers flags).
+void add_outlier_options(CLI::App& command, BuiltinSampling& sampling);
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress = {});
 

@@ -475,6 +475,54 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
 }
 
+// Strays in a scan (50 specks in the cylinder's bounding box, 0.5% of the points) are removed
+// before anything else: every speck farther than 3 spacings from the surface is removed, and
+// no sample of it. Kept (--keep-outliers), the specks shrink the estimated reach and with it
+// rho (more than twice the envelope samples) and pull the sheet farther from the cylinder.
+TEST_F(CliTest, reconstruct_removes_stray_samples_first) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 10000 --seed 3 -q -o " + path("c.xyz")).exit_code, 0);
+  auto read = envcrust::io::read_points(path("c.xyz"));
+  const std::size_t samples = read.points.size();
+  // Radius 1, z in [-1, 1]: the distance of p to the open cylinder.
+  auto distance_to_cylinder = [](const envcrust::Point3& p) {
+    const double radial = std::hypot(p.x(), p.y()) - 1.0;
+    const double beyond = std::max(0.0, std::abs(p.z()) - 1.0);
+    return std::hypot(radial, beyond);
+  };
+  std::uint64_t state = 12345;
+  auto next = [&state] {  // a fixed sequence in [-1.2, 1.2]
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return -1.2 + 2.4 * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  std::size_t far_specks = 0;
+  for (int i = 0; i < 50; ++i) {
+    read.points.emplace_back(next(), next(), next());
+    far_specks += distance_to_cylinder(read.points.back()) > 0.1;  // 3 spacings (0.033)
+  }
+  envcrust::io::write_points(path("specks.xyz"), read);
+  const auto j = run_envcrust_json("reconstruct " + path("specks.xyz") + " -r builtin:cylinder -o " + path("c.ply") +
+                                   " --outliers-out " + path("removed.xyz") + " --json");
+  const auto removed = envcrust::io::read_points(path("removed.xyz")).points;
+  EXPECT_EQ(j["input_outliers_removed"], removed.size());
+  EXPECT_EQ(j["input_points"], samples + 50 - removed.size());
+  std::size_t removed_far = 0;
+  for (const auto& p : removed) {
+    EXPECT_GT(distance_to_cylinder(p), 0.02) << "a sample of the cylinder removed";
+    removed_far += distance_to_cylinder(p) > 0.1;
+  }
+  EXPECT_EQ(removed_far, far_specks);
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+  const auto kept = run_envcrust_json("reconstruct " + path("specks.xyz") + " -r builtin:cylinder -o " +
+                                      path("k.ply") + " --keep-outliers --json");
+  EXPECT_EQ(kept["input_outliers_removed"], 0);
+  EXPECT_LT(kept["envelope"]["rho"].get<double>(), 0.7 * j["envelope"]["rho"].get<double>());
+  EXPECT_GT(kept["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(),
+            j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>());
+  EXPECT_GT(kept["envelope"]["samples"].get<double>(), 2.0 * j["envelope"]["samples"].get<double>());
+}
+
 // A point file of a Moebius strip comes out non-orientable, as it should: its orientation
 // seam is crossed by no reversing loop shorter than 4 pi rho (they run around the strip, about
 // 2 pi / rho = 35 rho long), so --orientable=auto keeps it as a twist and says so. Since a
@@ -706,7 +754,9 @@ TEST_F(CliTest, reconstruct_counts_the_samples_behind_a_gap_warning) {
     std::ofstream out(path("c.xyz"), std::ios::app);
     for (int i = 0; i < 6; ++i) out << 0.3 * (i - 2.5) << " 0.1 " << (i % 2 ? 1.6 : -1.6) << "\n";  // beyond the rims
   }
-  const auto j = run_envcrust_json("reconstruct " + path("c.xyz") + " -r builtin:cylinder -o " + path("c.ply") + " --json");
+  // Kept (--keep-outliers): by default these strays are removed before anything else.
+  const auto j = run_envcrust_json("reconstruct " + path("c.xyz") + " -r builtin:cylinder -o " + path("c.ply") +
+                                   " --keep-outliers --json");
   std::string gaps;
   for (const auto& w : j["warnings"])
     if (w.get<std::string>().rfind("the input has gaps of up to ", 0) == 0) gaps = w.get<std::string>();
