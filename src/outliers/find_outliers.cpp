@@ -79,21 +79,23 @@ OutlierReport find_outliers(const std::vector<Point3>& points, const OutlierOpti
   report.is_outlier.assign(n, 0);
   const unsigned k = options.neighbors;
   if (n <= k) return report;
-  const NearestIndex index(points);
-  // Neighbour queries along a Hilbert curve (consecutive queries touch the same tree nodes);
-  // each point's result is independent of the order.
+  // Everything runs on a copy of the points along a Hilbert curve: consecutive queries touch
+  // the same tree nodes, and the kd-tree's indices point to nearby memory (in a scan's file
+  // order, each distance read was a cache miss). The result does not depend on the threads.
   const std::vector<std::size_t> order = mesh::hilbert_order(points);
+  std::vector<Point3> sorted(n);
+  for (std::size_t r = 0; r < n; ++r) sorted[r] = points[order[r]];
+  const NearestIndex index(sorted);
   std::vector<std::uint32_t> neighbours(n * k);
   std::vector<Local> local(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
     std::vector<double> scratch;
-    for (std::size_t r = range.begin(); r != range.end(); ++r) {
-      const std::size_t i = order[r];
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
       std::uint32_t* mine = &neighbours[i * k];
       unsigned found = 0;
-      for (const auto& [j, d] : index.nearest(points[i], k + 1))
+      for (const auto& [j, d] : index.nearest(sorted[i], k + 1))
         if (j != i && found < k) mine[found++] = static_cast<std::uint32_t>(j);
-      local[i] = fit(points[i], points, mine, k, scratch);
+      local[i] = fit(sorted[i], sorted, mine, k, scratch);
     }
   });
   std::vector<char> off_plane(n, 0), isolated(n, 0);
@@ -107,9 +109,9 @@ OutlierReport find_outliers(const std::vector<Point3>& points, const OutlierOpti
         spacings.push_back(local[neighbours[i * k + j]].mean_distance);
       }
       const Local& l = local[i];
-      off_plane[i] = l.off_plane > options.off_plane_rel_radius * l.radius &&
-                     l.off_plane > options.off_plane_rel_noise * median_of(residuals);
-      isolated[i] = l.mean_distance > options.isolated_rel_spacing * median_of(spacings);
+      off_plane[order[i]] = l.off_plane > options.off_plane_rel_radius * l.radius &&
+                            l.off_plane > options.off_plane_rel_noise * median_of(residuals);
+      isolated[order[i]] = l.mean_distance > options.isolated_rel_spacing * median_of(spacings);
     }
   });
   for (std::size_t i = 0; i < n; ++i) {
