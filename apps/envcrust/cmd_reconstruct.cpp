@@ -120,6 +120,12 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "Also write the stray samples removed from a point file (.xyz/.ply; none: an empty file)");
 }
 
+void print_outliers_line(const LoadedSurface& loaded) {
+  if (loaded.outliers.empty()) return;
+  std::cout << "  input: " << loaded.outliers.size()
+            << " stray samples removed (--outliers-out writes them, --keep-outliers keeps them)\n";
+}
+
 void write_outliers(const ReconstructCommand& cmd, const LoadedSurface& loaded) {
   if (cmd.outliers_output.empty()) return;
   PointSet removed;
@@ -455,6 +461,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (cmd.common.quiet) return;
   std::cout << "reconstructed " << cmd.input << " (" << loaded.samples.points.size() << " points) -> "
             << cmd.output << "\n";
+  print_outliers_line(loaded);
   if (cmd.options.method == pipeline::Method::Envelope)
     std::cout << "  envelope: rho " << (result.envelope.local_rho.empty() ? "" : "adaptive, at most ")
               << result.envelope.rho
@@ -521,6 +528,7 @@ void run_envelope(ReconstructCommand& cmd) {
   } else if (!cmd.common.quiet) {
     std::cout << "wrote " << env.samples.size() << " envelope samples (rho " << env.rho << ", spacing "
               << env.spacing << ") to " << cmd.output << "\n";
+    print_outliers_line(loaded);
     for (const auto& w : env.warnings) std::cout << "  warning: " << w << "\n";
   }
 }

@@ -514,6 +514,11 @@ TEST_F(CliTest, reconstruct_removes_stray_samples_first) {
   EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
   EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
   EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+  const auto text = run_envcrust("envelope " + path("specks.xyz") + " -o " + path("e.xyz"));
+  EXPECT_NE(text.out.find("\n  input: " + std::to_string(removed.size()) +
+                          " stray samples removed (--outliers-out writes them, --keep-outliers keeps them)\n"),
+            std::string::npos)
+      << text.out;
   const auto kept = run_envcrust_json("reconstruct " + path("specks.xyz") + " -r builtin:cylinder -o " +
                                       path("k.ply") + " --keep-outliers --json");
   EXPECT_EQ(kept["input_outliers_removed"], 0);
