@@ -217,9 +217,9 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
 
 void add_outlier_options(CLI::App& sub, BuiltinSampling& sampling) {
   sub.add_flag("--keep-outliers", [&sampling](std::int64_t) { sampling.remove_outliers = false; },
-               "Point files: keep the stray samples that are otherwise removed first (points off the plane of "
-               "their 16 nearest neighbours by half their distance and 8 times the residual there, or 4 times "
-               "farther from them than those are from theirs)");
+               "Point files: keep the stray samples that are otherwise removed first (points farther from the "
+               "plane of their 16 nearest neighbours than half the distance to the farthest of them and 8 times "
+               "the residual there, or 4 times farther from them than those are from theirs)");
 }
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress) {
