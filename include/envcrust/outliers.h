@@ -20,9 +20,9 @@ namespace envcrust::outliers {
 /// times radius squared, or the noise); a stray point's neighbours are surface points it does
 /// not belong to. Thin parts (two sheets in one neighbourhood) widen the residual and keep
 /// their points. Defaults measured in tests/outliers: no sample of a built-in surface flagged
-/// (1k and 10k samples, clean or with 0.25% noise); a lone sample moved off the surface by 2
-/// average spacings flagged in 18-20 of 20 cases on clean samples, by 4 in 20 of 20 (except
-/// inside the torus's thin tube), and at 12 noise sigmas on noisy ones.
+/// (1k and 10k samples, clean or with 0.25% noise); of 20 lone samples moved off the surface
+/// by 2 average spacings, 18-20 flagged on clean samples, by 4-8 spacings 16-20 (all 20 on
+/// the cylinder, trefoil ribbon and sphere), and from about 12 noise sigmas on noisy ones.
 struct OutlierOptions {
   unsigned neighbors = 16;              ///< k, >= 6
   double off_plane_rel_radius = 0.5;    ///< r / radius of the neighbourhood, in (0, 1]
