@@ -24,7 +24,7 @@ double bbox_diagonal(const std::vector<Point3>& points) {
   const double dx = box.xmax() - box.xmin();
   const double dy = box.ymax() - box.ymin();
   const double dz = box.zmax() - box.zmin();
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
+  return std::hypot(dx, dy, dz);  // no underflow of tiny extents (1e-200 squared is 0)
 }
 
 double total_area(const TriangleMesh& mesh) {

@@ -138,15 +138,17 @@ void write_sphere(const std::string& file, double scale, double offset) {
 }  // namespace
 
 // Coordinates the geometry cannot hold (squares of squared radii overflow beyond about 1e77,
-// underflow below 1e-77; a unit sphere 1e12 from the origin keeps 4 digits) are refused by
+// underflow below 1e-77; a sphere of radius 1e-200 once read as a line; a unit sphere 1e12 from the origin keeps 4 digits) are refused by
 // name before any stage runs: the Power Crust crashed on the first two.
 TEST_F(CliTest, coordinates_too_large_too_small_or_too_far_out_are_refused) {
   write_sphere(path("big.xyz"), 1e100, 0.0);
   write_sphere(path("small.xyz"), 1e-150, 0.0);
+  write_sphere(path("tiny.xyz"), 1e-200, 0.0);  // its squared extent underflows to 0
   write_sphere(path("far.xyz"), 1.0, 1e12);
   const std::pair<const char*, const char*> cases[] = {
       {"big.xyz", ": point 0 (from 0) has a coordinate of magnitude 9.98e+99, beyond 1e+30: scale the input down"},
       {"small.xyz", ": the points span only 3.45e-150 (bounding-box diagonal), below 1e-30: scale the input up"},
+      {"tiny.xyz", ": the points span only 3.45e-200 (bounding-box diagonal), below 1e-30: scale the input up"},
       {"far.xyz", ": the points span only 3.46 at coordinates up to 1e+12: too few digits are left to tell them "
                   "apart; move the input near the origin"},
   };
