@@ -25,6 +25,14 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
     w << ": the result closed it, tore it or moved it";
     out.push_back(w.str());
   }
+  for (const std::size_t c : check.unresolved_curves) {
+    std::ostringstream w;
+    w.precision(4);
+    w << "input boundary curve " << c << " (length " << mesh::closed_length(curves[c]) << ") is closed in the result: "
+      << "shorter than " << check.min_resolvable_length << ", it is below the resolution of the reconstruction "
+      << "(the envelope bridges every hole shorter than 2 pi rho)";
+    out.push_back(w.str());
+  }
   for (const std::size_t l : check.extra_loops) {
     std::ostringstream w;
     w.precision(4);
@@ -38,7 +46,8 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
 
 nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const std::vector<Polyline>& curves,
                                    const topology::MeshTopology& topology) {
-  nlohmann::json missing = nlohmann::json::array(), extra = nlohmann::json::array(), matches = nlohmann::json::array();
+  nlohmann::json missing = nlohmann::json::array(), unresolved = nlohmann::json::array(),
+                 extra = nlohmann::json::array(), matches = nlohmann::json::array();
   for (const auto& m : check.matches)
     matches.push_back({{"curve", m.reference_loop},
                        {"curve_length", mesh::closed_length(curves[m.reference_loop])},
@@ -47,11 +56,13 @@ nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const s
                        {"follow_distance", m.mesh_loop ? nlohmann::json(check.follow_distances[m.reference_loop])
                                                        : nlohmann::json(nullptr)}});
   for (const std::size_t c : check.missing_curves) missing.push_back(c);
+  for (const std::size_t c : check.unresolved_curves) unresolved.push_back(c);
   for (const std::size_t l : check.extra_loops) extra.push_back(l);
   return {{"tolerance", check.tolerance},        {"follow_fraction", check.follow_fraction},
           {"curves", curves.size()},
           {"loops", topology.boundary_loops.size()}, {"matches", matches},
-          {"missing_curves", missing},           {"extra_loops", extra},
+          {"missing_curves", missing},           {"unresolved_curves", unresolved},
+          {"min_resolvable_length", check.min_resolvable_length}, {"extra_loops", extra},
           {"is_consistent", check.is_consistent()}};
 }
 

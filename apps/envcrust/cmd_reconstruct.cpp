@@ -428,7 +428,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     for (const auto& c : loaded.samples.boundary) curves.push_back(c.polyline());
     const bool is_envelope = cmd.options.method == pipeline::Method::Envelope;
     const auto check =
-        is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope.rho)
+        is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope)
                     : analysis::check_boundary(report->topology, curves, 0.01 * mesh::bbox_diagonal(loaded.samples.points));
     std::ostringstream tolerance_text;
     tolerance_text.precision(4);

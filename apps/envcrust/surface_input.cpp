@@ -197,6 +197,11 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
                                "Point files: boundary points to use instead of detecting them (point files in any "
                                "order or closed .polyline curves, repeatable, several loops; each point marks its "
                                "nearest sample; normals, if every file has them, are outward conormals)");
+  sub.add_option("--boundary-min-length", sampling.boundary.min_loop_length,
+                 "Point files: drop detected loops shorter than this many spacings (chains of false "
+                 "candidates around random voids; holes this short are below the envelope's resolution)")
+      ->capture_default_str()
+      ->check(number_above(0, true));
   sub.add_option("--boundary-min-width", sampling.boundary.min_loop_width,
                  "Point files: drop detected loops narrower than this many local spacings "
                  "(sampling gaps, not holes); 0 keeps all")

@@ -83,12 +83,17 @@ AnalysisReport analyze_mesh(const TriangleMesh& mesh, topology::MeshTopology top
 /// curve when `follow_fraction` of each one's length lies within the tolerance of the other
 /// (their partial Hausdorff distance, `follow_distances`): a result cut short of a ragged
 /// scan rim at one notch still follows it, where the full Hausdorff distance would not.
+/// A curve shorter than `min_resolvable_length` that no loop follows is not missing but
+/// unresolved: a reconstruction that cannot open holes that small (the envelope closes every
+/// hole shorter than 2 pi rho: its inradius is below rho) was bound to close it.
 struct BoundaryCheck {
   double tolerance = 0.0;
   double follow_fraction = 1.0;
+  double min_resolvable_length = 0.0;
   std::vector<BoundaryMatch> matches;       ///< one per curve, in order
   std::vector<double> follow_distances;     ///< per curve: partial Hausdorff to its nearest loop (inf: none)
   std::vector<std::size_t> missing_curves;  ///< curves whose nearest loop does not follow them
+  std::vector<std::size_t> unresolved_curves;  ///< such curves shorter than min_resolvable_length
   std::vector<std::size_t> extra_loops;     ///< loops that follow no curve
   [[nodiscard]] bool is_consistent() const { return missing_curves.empty() && extra_loops.empty(); }
 };
@@ -97,9 +102,9 @@ struct BoundaryCheck {
 /// follow_fraction in (0, 1]). 0.9: measured on the face scan as a mesh, whose result's rim
 /// keeps 98.5% of the mesh's ragged rim within 2 rho and 96.6% the other way (Hausdorff 13.0
 /// at a notch, 2 rho = 1.54), while a hole the input has not runs along no curve at all.
-/// @throws InvalidInput on a tolerance or fraction out of range.
+/// @throws InvalidInput on a tolerance or fraction out of range, or a negative length.
 BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::vector<Polyline>& curves,
-                             double tolerance, double follow_fraction = 0.9);
+                             double tolerance, double follow_fraction = 0.9, double min_resolvable_length = 0.0);
 
 /// Knot analysis of a lone closed curve (the paper's Figure 10 needs only this).
 knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& options = {});

@@ -55,7 +55,8 @@ struct BoundaryOptions {
   /// (in s, >= 0) are dropped and counted (scan holes, interior voids). 20: at 50k points
   /// chains of false candidates around voids reach 10 s (sphere: 4 false loops at 10 s); a
   /// hole of circumference < 20 s is also below the envelope's resolution (rho ~ 4.5 s fills
-  /// holes shorter than 2 pi rho, METHOD section 5).
+  /// holes shorter than 2 pi rho, METHOD section 5). The final loop is held to it too (a
+  /// path out and back along one chain, its switchbacks removed, can be left shorter).
   double min_loop_length = 20.0;
   /// Loops narrower than this many local spacings are sampling gaps, not holes, and are
   /// dropped (counted in dropped_loops). Width = 4 area / perimeter of the fitted loop (a disc

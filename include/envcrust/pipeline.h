@@ -86,7 +86,9 @@ ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions 
 struct RunDefects {
   bool is_empty = false;           ///< the run gave no faces (genus unset)
   std::optional<long> genus;       ///< handles and cross-caps over components; unset: no manifold
-  std::size_t missing_curves = 0;  ///< input boundary curves no border loop follows within 2 rho
+  /// Input boundary curves no border loop follows within 2 rho, those below the envelope's
+  /// resolution too: the adaptive run's smaller rho may resolve what the uniform one cannot.
+  std::size_t missing_curves = 0;
   std::size_t extra_loops = 0;     ///< border loops that follow no input boundary curve within 2 rho
   /// missing_curves + extra_loops + the handles and cross-caps beyond max_genus (all of them
   /// when it is unknown); the largest value for no manifold.
@@ -128,10 +130,13 @@ struct ReconstructResult {
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options = {}, const Progress& progress = {});
 
-/// The border loops of a result against the input's boundary curves, within 2 rho: the check
-/// of the adaptive retry and of the CLI's report.
+/// The border loops of a result against the input's boundary curves, within 2 rho (the
+/// envelope's rho; in adaptive mode its largest): the check of the adaptive retry and of the
+/// CLI's report. Curves shorter than 2 pi times the smallest rho are below the envelope's
+/// resolution: closed, they are unresolved, not missing.
 analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
-                                              const envelope::SurfaceSamples& samples, double rho);
+                                              const envelope::SurfaceSamples& samples,
+                                              const envelope::EnvelopeSamples& envelope);
 
 /// The power shape's triangles as a mesh whose vertices are the In poles, in pole order (the
 /// paper's output; the power shape holds only In poles).

@@ -1,6 +1,7 @@
 // analyze_mesh: composes topology, knot invariants of boundary loops and distances.
 #include "envcrust/analysis.h"
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 
 #include <CGAL/bounding_box.h>
 
@@ -162,13 +163,15 @@ knots::KnotReport analyze_curve(const Polyline& curve, const AnalyzeOptions& opt
 }
 
 BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::vector<Polyline>& curves,
-                             double tolerance, double follow_fraction) {
+                             double tolerance, double follow_fraction, double min_resolvable_length) {
   if (!(tolerance > 0)) throw InvalidInput("check_boundary: tolerance must be > 0");
   if (!(follow_fraction > 0 && follow_fraction <= 1))
     throw InvalidInput("check_boundary: follow_fraction must be in (0, 1]");
+  if (!(min_resolvable_length >= 0)) throw InvalidInput("check_boundary: min_resolvable_length must be >= 0");
   BoundaryCheck check;
   check.tolerance = tolerance;
   check.follow_fraction = follow_fraction;
+  check.min_resolvable_length = min_resolvable_length;
   check.matches = match_boundaries(topology, curves);
   std::vector<char> explained(topology.boundary_loops.size(), 0);
   for (const auto& m : check.matches) {
@@ -179,6 +182,7 @@ BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::
     }
     check.follow_distances.push_back(follow);
     if (follow <= tolerance) explained[*m.mesh_loop] = 1;
+    else if (mesh::closed_length(curves[m.reference_loop]) < min_resolvable_length) check.unresolved_curves.push_back(m.reference_loop);
     else check.missing_curves.push_back(m.reference_loop);
   }
   for (std::size_t l = 0; l < explained.size(); ++l)

@@ -176,7 +176,7 @@ double sheet_beyond_fraction(const BoundaryCurve& curve, const std::vector<Point
 
 // Turns each component of flagged candidates, with its ordered centreline, into a closed,
 // framed curve (resampled, smoothed); fills `out` (curves, flags, conormals, warnings). With
-// `drop_small`, components shorter than min_loop_length or narrower than min_loop_width are
+// `drop_small`, components whose centreline or final loop is shorter than min_loop_length or narrower than min_loop_width are
 // dropped and counted; without it only those that order into fewer than 3 points are, with a
 // warning.
 void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>& normals,
@@ -228,6 +228,14 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
       curve = fitted.polyline();
     }
     curve = detail::resample_closed(detail::remove_switchbacks(curve), output_spacing);
+    // Once its switchbacks are gone a path that ran out and back along one chain of flagged
+    // samples (a crack, a spur of the band) can be left a loop shorter than any kept one
+    // (the face scan's: its path 26 spacings end to end, the loop 0.7): it is held to the
+    // same length.
+    if (drop_small && mesh::closed_length(curve) < options.min_loop_length * s) {
+      ++out.dropped_loops;
+      continue;
+    }
     const double local = local_spacing(points, index, component);
     const double width = local > 0 ? loop_width(curve) / local : 0.0;
     if (drop_small && options.min_loop_width > 0 && local > 0 && width < options.min_loop_width) {

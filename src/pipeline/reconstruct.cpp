@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 
 
 namespace envcrust::pipeline {
@@ -124,8 +125,8 @@ RunDefects defects_of(ReconstructResult& run, const envelope::SurfaceSamples& sa
   if (d.is_empty) return d;
   const topology::MeshTopology& t = run.topology.emplace(topology::analyze_topology(run.mesh));
   d.genus = topology::total_genus(t);
-  const analysis::BoundaryCheck check = check_result_boundary(t, samples, run.envelope.rho);
-  d.missing_curves = check.missing_curves.size();
+  const analysis::BoundaryCheck check = check_result_boundary(t, samples, run.envelope);
+  d.missing_curves = check.missing_curves.size() + check.unresolved_curves.size();
   d.extra_loops = check.extra_loops.size();
   return d;
 }
@@ -149,11 +150,13 @@ std::size_t RunDefects::count(std::optional<long> max_genus) const {
 }
 
 analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
-                                              const envelope::SurfaceSamples& samples, double rho) {
+                                              const envelope::SurfaceSamples& samples,
+                                              const envelope::EnvelopeSamples& envelope) {
   std::vector<Polyline> curves;
   curves.reserve(samples.boundary.size());
   for (const BoundaryCurve& c : samples.boundary) curves.push_back(c.polyline());
-  return analysis::check_boundary(result, curves, 2.0 * rho);
+  const double rho_min = envelope.rho_min > 0 ? envelope.rho_min : envelope.rho;
+  return analysis::check_boundary(result, curves, 2.0 * envelope.rho, 0.9, 2.0 * std::numbers::pi * rho_min);
 }
 
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,

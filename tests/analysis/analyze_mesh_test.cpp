@@ -120,9 +120,24 @@ TEST(BoundaryCheck, names_the_curves_without_a_loop_and_the_loops_without_a_curv
   EXPECT_TRUE(capped.extra_loops.empty());
   EXPECT_FALSE(capped.matches[0].mesh_loop.has_value());
 
+  // Circles of length 2 pi closed by a reconstruction that cannot open holes shorter than 7
+  // are unresolved, not missing; one that could open holes of length 6 missed them.
+  const auto unresolved = analysis::check_boundary(analysis::analyze_mesh(fixtures::capped_cylinder()).topology,
+                                                   circles, 0.1, 0.9, 7.0);
+  EXPECT_TRUE(unresolved.missing_curves.empty());
+  EXPECT_EQ(unresolved.unresolved_curves, (std::vector<std::size_t>{0, 1}));
+  EXPECT_TRUE(unresolved.is_consistent());
+  const auto resolvable = analysis::check_boundary(analysis::analyze_mesh(fixtures::capped_cylinder()).topology,
+                                                   circles, 0.1, 0.9, 6.0);
+  EXPECT_EQ(resolvable.missing_curves, (std::vector<std::size_t>{0, 1}));
+  EXPECT_TRUE(resolvable.unresolved_curves.empty());
+  // A curve that is followed is neither, however short.
+  EXPECT_TRUE(analysis::check_boundary(open, circles, 2 * sagitta, 0.9, 7.0).unresolved_curves.empty());
+
   EXPECT_THROW(analysis::check_boundary(open, circles, 0.0), InvalidInput);
   EXPECT_THROW(analysis::check_boundary(open, circles, 0.1, 0.0), InvalidInput);
   EXPECT_THROW(analysis::check_boundary(open, circles, 0.1, 1.5), InvalidInput);
+  EXPECT_THROW(analysis::check_boundary(open, circles, 0.1, 0.9, -1.0), InvalidInput);
 }
 
 // A ragged scan rim: one stretch of the curve (here 3 of its 628 vertices, pulled 0.05 out,

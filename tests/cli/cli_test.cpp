@@ -701,6 +701,42 @@ TEST_F(CliTest, reconstruct_with_given_boundary_points) {
   EXPECT_EQ(both.err, "envcrust: usage error: --no-boundary excludes --boundary\n");
 }
 
+// A given boundary loop shorter than 2 pi rho (here a circle of radius 0.15 on the mantle,
+// where the samples go on: no hole) is closed by any envelope: the report says it is below
+// the reconstruction's resolution instead of counting it as a curve the result missed.
+TEST_F(CliTest, reconstruct_names_a_boundary_curve_below_its_resolution) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 4000 -q -o " + path("c.xyz") + " --boundary-out " +
+                         path("rim.polyline")).exit_code, 0);
+  {
+    std::ofstream out(path("small.polyline"));
+    out.precision(17);
+    for (int k = 0; k < 32; ++k) {
+      const double a = 2 * 3.141592653589793 * k / 32, y = 0.15 * std::cos(a);
+      out << std::sqrt(1 - y * y) << " " << y << " " << 0.15 * std::sin(a) << "\n";
+    }
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("c.xyz") + " --boundary " + path("small.polyline") +
+                                   " --boundary " + path("rim.0.polyline") + " --boundary " + path("rim.1.polyline") +
+                                   " -o " + path("c.ply") + " --json");
+  EXPECT_EQ(j["input_boundary_curves"], 3);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  const auto& check = j["boundary_check"];
+  const double rho = j["envelope"]["rho"].get<double>();
+  EXPECT_NEAR(check["min_resolvable_length"].get<double>(), 2 * 3.141592653589793 * rho, 1e-9);
+  ASSERT_EQ(check["unresolved_curves"].size(), 1u);
+  EXPECT_TRUE(check["missing_curves"].empty());
+  EXPECT_EQ(check["is_consistent"], true);
+  const auto curve = check["unresolved_curves"][0].get<int>();
+  const double length = check["matches"][curve]["curve_length"].get<double>();
+  EXPECT_LT(length, 2 * 3.141592653589793 * 0.15);
+  std::ostringstream expected;
+  expected.precision(4);
+  expected << "input boundary curve " << curve << " (length " << length << ") is closed in the result: shorter than "
+           << check["min_resolvable_length"].get<double>()
+           << ", it is below the resolution of the reconstruction (the envelope bridges every hole shorter than 2 pi rho)";
+  EXPECT_NE(std::find(j["warnings"].begin(), j["warnings"].end(), expected.str()), j["warnings"].end()) << j["warnings"];
+}
+
 TEST_F(CliTest, reconstruct_too_few_points_names_the_file) {
   {
     std::ofstream out(path("few.xyz"));

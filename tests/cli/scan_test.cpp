@@ -149,6 +149,21 @@ TEST_F(CliTest, issue_5_lion_head_points_are_a_disc_with_the_neck_loop) {
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.08);
 }
 
+// Every curve the detector reports on a scan is at least min_loop_length (20 spacings) long.
+// On the face scan and the second bunny view a path ran out and back along one chain of
+// flagged samples; with its switchbacks removed it was left a loop of 0.7 and 5.8 spacings
+// (3 and 7 vertices) that still passed, since only the path was held to the length.
+TEST_F(CliTest, issue_5_detected_scan_loops_are_never_shorter_than_the_minimum) {
+  const std::filesystem::path data = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data";
+  for (const char* file : {"face_yh_scan_vhacd/points.xyz", "stanford_bunny_range_scans/bun045_points.xyz"}) {
+    if (!std::filesystem::exists(data / file)) GTEST_SKIP() << "no " << data / file;
+    const auto j = run_envcrust_json("boundary " + (data / file).string() + " --json");
+    const double spacing = j["spacing"].get<double>();
+    ASSERT_GT(j["curves"].size(), 5u) << file;
+    for (const auto& curve : j["curves"]) EXPECT_GE(curve["length"].get<double>(), 20 * spacing) << file;
+  }
+}
+
 // The sample inputs shipped with the original Power Crust program (synthetic closed surfaces):
 // two capsules of different sizes, and a knotted tube whose first point, (0, 0, 0), is a
 // stray one in the empty middle of the knot. The crust of each is the closed surface, within

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace envcrust {
 namespace {
@@ -94,11 +96,29 @@ TEST(CheckResultBoundary, FindsLoopsThatFollowNoCurve) {
   pipeline::ReconstructOptions options;
   const auto result = pipeline::reconstruct(samples, options);
   const auto t = topology::analyze_topology(result.mesh);
-  const auto check = pipeline::check_result_boundary(t, samples, result.envelope.rho);
+  const auto check = pipeline::check_result_boundary(t, samples, result.envelope);
   EXPECT_TRUE(check.is_consistent());
   EXPECT_DOUBLE_EQ(check.tolerance, 2.0 * result.envelope.rho);
+  EXPECT_NEAR(check.min_resolvable_length, 2 * std::numbers::pi * result.envelope.rho, 1e-12);
+  // Two more curves on the mantle that the result has no loop along: a hole of radius rho/2
+  // (the envelope closes every hole shorter than 2 pi rho: unresolved) and one of radius
+  // 2 rho (missing).
+  auto with_holes = samples;
+  for (const double radius : {0.5 * result.envelope.rho, 2.0 * result.envelope.rho}) {
+    BoundaryCurve hole;
+    for (int k = 0; k < 64; ++k) {
+      const double a = 2 * std::numbers::pi * k / 64, y = radius * std::cos(a), z = radius * std::sin(a);
+      BoundaryVertex v;
+      v.position = Point3(std::sqrt(1 - y * y), y, z);
+      hole.vertices.push_back(v);
+    }
+    with_holes.boundary.push_back(hole);
+  }
+  const auto holes = pipeline::check_result_boundary(t, with_holes, result.envelope);
+  EXPECT_EQ(holes.unresolved_curves, (std::vector<std::size_t>{2}));
+  EXPECT_EQ(holes.missing_curves, (std::vector<std::size_t>{3}));
   samples.boundary.pop_back();
-  const auto one_curve = pipeline::check_result_boundary(t, samples, result.envelope.rho);
+  const auto one_curve = pipeline::check_result_boundary(t, samples, result.envelope);
   EXPECT_TRUE(one_curve.missing_curves.empty());
   EXPECT_EQ(one_curve.extra_loops.size(), 1u);
 }
