@@ -150,15 +150,20 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
 // Detected boundary loops much narrower than the widest one may be unsampled stripes rather
 // than holes of the surface (the foot's sole: two loops about 5 spacings wide, the ankle 13):
 // which --boundary-min-width would drop them. Only when the detection dropped none by width,
-// and no loop is thinner than a stripe can be.
-std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
+// and no loop is thinner than a stripe can be. Loops below the reconstruction's resolution
+// (`unresolved`: closed in the result whatever the flag) are left out of it.
+std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded, const std::vector<std::size_t>& unresolved) {
   if (!loaded.detection) return std::nullopt;
   const auto& widths = loaded.detection->loop_widths;
-  if (widths.size() < 2 || loaded.min_loop_width > 0) return std::nullopt;
-  const double widest = *std::max_element(widths.begin(), widths.end());
+  std::vector<std::size_t> loops;  // the loops the hint weighs
+  for (std::size_t i = 0; i < widths.size(); ++i)
+    if (std::find(unresolved.begin(), unresolved.end(), i) == unresolved.end()) loops.push_back(i);
+  if (loops.size() < 2 || loaded.min_loop_width > 0) return std::nullopt;
+  double widest = 0.0;
+  for (const std::size_t i : loops) widest = std::max(widest, widths[i]);
   std::vector<std::size_t> narrow;
   double narrow_max = 0.0;
-  for (std::size_t i = 0; i < widths.size(); ++i)
+  for (const std::size_t i : loops)
     if (widths[i] >= kStripeMinWidth && widths[i] < kNarrowLoopWidth && widths[i] < 0.5 * widest) {
       narrow.push_back(i);
       narrow_max = std::max(narrow_max, widths[i]);
@@ -166,8 +171,8 @@ std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
   if (narrow.empty()) return std::nullopt;
   // The width that drops them would also drop any thinner loop, which is no stripe but a
   // boundary the detector could not close (the lion head's neck): then no advice.
-  for (const double w : widths)
-    if (w < kStripeMinWidth) return std::nullopt;
+  for (const std::size_t i : loops)
+    if (widths[i] < kStripeMinWidth) return std::nullopt;
   // "a", "a and b", "a, b and c"
   auto listed = [&](auto&& item) {
     std::ostringstream out;
@@ -192,7 +197,8 @@ std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded) {
 // or sampled too sparsely, which the cuts repair when the scanned surface is known to be
 // orientable and locally a disc. A mesh that is itself non-orientable gets no such hint.
 std::vector<std::string> scan_hints(const LoadedSurface& loaded, const ReconstructCommand& cmd,
-                                    const analysis::AnalysisReport& report) {
+                                    const analysis::AnalysisReport& report,
+                                    const std::vector<std::size_t>& unresolved_curves) {
   const auto& sheet = cmd.options.sheet;
   if (loaded.kind.is_builtin || cmd.options.method != pipeline::Method::Envelope ||
       cmd.options.extraction != pipeline::Extraction::Sheet)
@@ -217,7 +223,7 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const Reconstru
       << " rho: if the scanned surface has fewer handles, --cut-handles " << 2 * sheet.cut_handles_rel_rho
       << " also removes the ones up to twice as wide";
   if (!h.str().empty()) hints.push_back(h.str());
-  if (const auto stripes = narrow_loops_hint(loaded)) hints.push_back(*stripes);
+  if (const auto stripes = narrow_loops_hint(loaded, unresolved_curves)) hints.push_back(*stripes);
   return hints;
 }
 
@@ -398,6 +404,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   std::vector<std::string> warnings = result.warnings;
   std::optional<analysis::AnalysisReport> report;
   std::optional<double> boundary_gap;  // of the reference's boundary from the samples, / diagonal
+  std::vector<std::size_t> unresolved_curves;  // input curves below the resolution (boundary check)
   if (!cmd.no_analysis) {
     // The truth when known: the exact surface of a built-in, a mesh input's own surface (its
     // vertices alone would count the triangles' size as error); else the input points.
@@ -434,11 +441,13 @@ void run_reconstruct(ReconstructCommand& cmd) {
     tolerance_text.precision(4);
     tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << check.tolerance;
     j["boundary_check"] = boundary_check_json(check, curves, report->topology);
+    unresolved_curves = check.unresolved_curves;
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));
   }
   j["warnings"] = warnings;
-  const std::vector<std::string> hints = report ? scan_hints(loaded, cmd, *report) : std::vector<std::string>{};
+  const std::vector<std::string> hints =
+      report ? scan_hints(loaded, cmd, *report, unresolved_curves) : std::vector<std::string>{};
   j["hints"] = hints;
   // Every output is written once nothing can fail any more, so a failed run leaves none.
   const std::string report_text = json_text(j);
