@@ -43,7 +43,7 @@ struct ReconstructOptions {
   std::optional<remesh::RemeshOptions> remesh;
   /// Check a uniform-rho run (Method::Envelope, Extraction::Sheet) and, when it fails, run
   /// again with adaptive rho (small where M is thin, large where it is sparse) and keep the
-  /// run with fewer defects (RunDefects::count; ReconstructResult::adaptive_retry). It fails
+  /// run with fewer defects (RunDefects::is_better_than; ReconstructResult::adaptive_retry). It fails
   /// when its result is empty or no manifold, has a border loop that follows no boundary curve of the
   /// input within 2 rho (a hole where the input is too sparse for one rho), or more handles
   /// and cross-caps than max_genus; without max_genus, any when rho had to be raised above
@@ -93,6 +93,10 @@ struct RunDefects {
   /// missing_curves + extra_loops + the handles and cross-caps beyond max_genus (all of them
   /// when it is unknown); the largest value for no manifold.
   [[nodiscard]] std::size_t count(std::optional<long> max_genus) const;
+  /// Fewer defects than `other`, or as many with fewer handles and cross-caps beyond
+  /// max_genus: handles are what the retry's smaller rho is for (a uniform rho too large for
+  /// the thin parts), and on a tie the run without them is kept.
+  [[nodiscard]] bool is_better_than(const RunDefects& other, std::optional<long> max_genus) const;
 };
 
 /// What the adaptive retry did.

@@ -149,6 +149,13 @@ std::size_t RunDefects::count(std::optional<long> max_genus) const {
   return missing_curves + extra_loops + static_cast<std::size_t>(excess);
 }
 
+bool RunDefects::is_better_than(const RunDefects& other, std::optional<long> max_genus) const {
+  const std::size_t mine = count(max_genus), theirs = other.count(max_genus);
+  if (mine != theirs) return mine < theirs;
+  if (!genus || !other.genus) return false;
+  return std::max(0L, *genus - max_genus.value_or(0)) < std::max(0L, *other.genus - max_genus.value_or(0));
+}
+
 analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
                                               const envelope::SurfaceSamples& samples,
                                               const envelope::EnvelopeSamples& envelope) {
@@ -173,7 +180,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
       once.envelope.rho_mode = envelope::RhoMode::Adaptive;
       ReconstructResult adaptive = reconstruct_once(samples, once, progress);
       retry.adaptive = defects_of(adaptive, samples);
-      retry.kept_adaptive = retry.adaptive.count(options.max_genus) < retry.uniform.count(options.max_genus);
+      retry.kept_adaptive = retry.adaptive.is_better_than(retry.uniform, options.max_genus);
       if (retry.kept_adaptive) {
         adaptive.seconds.envelope += out.seconds.envelope;
         adaptive.seconds.extraction += out.seconds.extraction;

@@ -26,6 +26,22 @@ TEST(RunDefects, CountsMismatchesAndHandlesBeyondTheBound) {
   EXPECT_EQ(d.count(0), std::numeric_limits<std::size_t>::max());
 }
 
+// The face scan's two runs (2026-12-02): 2 extra loops each, the uniform one 6 curves missed
+// and genus 1, the adaptive one 7 missed and genus 0. As many defects: the one without the
+// handle is better; with the handle allowed (max_genus 1) the uniform one has fewer.
+TEST(RunDefects, OnATieFewerHandlesAreBetter) {
+  pipeline::RunDefects uniform, adaptive;
+  uniform.genus = 1, uniform.missing_curves = 6, uniform.extra_loops = 2;
+  adaptive.genus = 0, adaptive.missing_curves = 7, adaptive.extra_loops = 2;
+  EXPECT_TRUE(adaptive.is_better_than(uniform, std::nullopt));
+  EXPECT_FALSE(uniform.is_better_than(adaptive, std::nullopt));
+  EXPECT_TRUE(uniform.is_better_than(adaptive, 1));
+  EXPECT_FALSE(adaptive.is_better_than(adaptive, std::nullopt));  // equal: neither
+  pipeline::RunDefects broken;                                     // no manifold
+  EXPECT_TRUE(uniform.is_better_than(broken, std::nullopt));
+  EXPECT_FALSE(broken.is_better_than(broken, std::nullopt));
+}
+
 // A torus said to have genus 0 (a wrong bound): the uniform run's genus 1 exceeds it, so the
 // run is repeated with adaptive rho; that run has genus 1 as well, no fewer defects, so the
 // uniform run is kept, and both runs' checks are reported.
