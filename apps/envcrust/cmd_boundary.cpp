@@ -7,6 +7,7 @@
 #include "surface_input.h"
 
 #include "envcrust/distance.h"
+#include "envcrust/errors.h"
 #include "envcrust/io.h"
 #include "envcrust/knots.h"
 #include "envcrust/mesh.h"
@@ -44,14 +45,23 @@ std::vector<std::pair<int, double>> nearest_curves(const std::vector<Polyline>& 
   return out;
 }
 
-nlohmann::json curves_json(const LoadedSurface& loaded, double diagonal) {
+// Each curve's vertices, length, knot type ("unknown", with a note, when the curve passes
+// through itself and no projection of it is generic), width and share sampled beyond.
+nlohmann::json curves_json(const LoadedSurface& loaded, double diagonal, std::vector<std::string>& notes) {
   nlohmann::json curves = nlohmann::json::array();
   const auto& detection = loaded.detection;
   for (std::size_t i = 0; i < loaded.samples.boundary.size(); ++i) {
     const Polyline line = loaded.samples.boundary[i].polyline();
     const double length = mesh::closed_length(line);
     nlohmann::json c = {{"vertices", line.size()}, {"length", length}, {"length_rel_diag", length / diagonal}};
-    if (line.size() >= 3) c["knot"] = knots::to_string(knots::identify_knot(line).type);
+    if (line.size() >= 3) {
+      try {
+        c["knot"] = knots::to_string(knots::identify_knot(line).type);
+      } catch (const Error& e) {
+        c["knot"] = "unknown";
+        notes.push_back("curve " + std::to_string(i) + ": no knot type: " + e.what());
+      }
+    }
     if (detection && i < detection->loop_widths.size()) c["width_local_spacings"] = detection->loop_widths[i];
     if (detection && i < detection->sampled_beyond.size()) c["sampled_beyond"] = detection->sampled_beyond[i];
     curves.push_back(c);
@@ -141,9 +151,11 @@ void run_boundary(BoundaryCommand& cmd) {
   const double diagonal = reference && reference->mesh   ? mesh::bbox_diagonal(reference->mesh->vertices)
                           : reference && !reference->points.empty() ? mesh::bbox_diagonal(reference->points)
                                                                     : mesh::bbox_diagonal(loaded.samples.points);
+  std::vector<std::string> notes = loaded.notes;
   nlohmann::json j = {{"input", cmd.input}, {"source", loaded.source}, {"points", loaded.samples.points.size()},
-                      {"diagonal", diagonal}, {"notes", loaded.notes}};
-  j["curves"] = curves_json(loaded, diagonal);
+                      {"diagonal", diagonal}};
+  j["curves"] = curves_json(loaded, diagonal, notes);
+  j["notes"] = notes;
   if (loaded.detection) {
     j["spacing"] = loaded.detection->spacing;
     j["dropped_loops"] = loaded.detection->dropped_loops;

@@ -1037,6 +1037,27 @@ TEST_F(CliTest, boundary_finds_the_cylinder_rims_and_writes_them_back) {
   EXPECT_FALSE(fs::exists(path("x.off")));
 }
 
+// A border that passes through itself has no knot type (no projection of it is generic): a
+// quad split into two triangles whose corners are placed as a bowtie, so that two border
+// edges cross at (0.5, 0.5, 0). The report says "unknown" with a note; the command used to
+// stop with the knot code's error, naming no file.
+TEST_F(CliTest, boundary_of_a_border_through_itself_has_an_unknown_knot_type) {
+  {
+    std::ofstream out(path("bowtie.off"));
+    out << "OFF\n4 2 0\n0 0 0\n1 1 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  }
+  const auto j = run_envcrust_json("boundary " + path("bowtie.off") + " --json");
+  ASSERT_EQ(j["curves"].size(), 1u);
+  EXPECT_EQ(j["curves"][0]["knot"], "unknown");
+  const std::string note =
+      "curve 0: no knot type: no generic projection found in 200 random directions (are the curves self-intersecting?)";
+  EXPECT_NE(std::find(j["notes"].begin(), j["notes"].end(), note), j["notes"].end()) << j["notes"];
+  const auto text = run_envcrust("boundary " + path("bowtie.off"));
+  EXPECT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("curve 0: 4 vertices, length 4.828 (341% of the diagonal), unknown"), std::string::npos)
+      << text.out;
+}
+
 // --boundary-take-in bulges the curve out past samples the outer fit leaves beyond it: on the
 // square's point file (seed 3: a void at its left edge with two samples across its mouth) the
 // detected curve comes closer to the true rim (measured 2.48% -> 2.01% of the diagonal; the
