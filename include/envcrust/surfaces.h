@@ -84,7 +84,7 @@ std::unique_ptr<Surface> make_builtin(std::string_view name);
 /// Options of sample_surface.
 struct SampleOptions {
   std::size_t count = 10000;     ///< number of points, >= 1
-  double noise_rel_diag = 0.0;   ///< Gaussian noise sigma as a fraction of the bbox diagonal
+  double noise_rel_diag = 0.0;   ///< Gaussian noise sigma as a fraction of the bbox diagonal, in [0, 1]
   bool with_normals = false;     ///< fill PointSet::normals with the exact unit normals
   std::uint64_t seed = 1;        ///< same seed, same points
 };

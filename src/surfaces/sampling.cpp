@@ -75,8 +75,11 @@ PointSet sample_surface(const Surface& surface, const SampleOptions& options) {
   if (options.count < 1) {
     throw InvalidOptions("sample count must be >= 1 (got " + std::to_string(options.count) + ")");
   }
-  if (!(options.noise_rel_diag >= 0) || !std::isfinite(options.noise_rel_diag)) {
-    throw InvalidOptions("noise must be >= 0 (got " + format_value(options.noise_rel_diag) + ")");
+  // Noise beyond the diagonal leaves no surface to sample; far beyond it, coordinates that
+  // no stage accepts (or infinite ones).
+  if (!(options.noise_rel_diag >= 0 && options.noise_rel_diag <= 1)) {
+    throw InvalidOptions("noise must be in [0, 1], a fraction of the diagonal (got " +
+                         format_value(options.noise_rel_diag) + ")");
   }
   const ParameterDomain d = surface.domain();
   double bound = bound_safety * max_area_element(surface, d);

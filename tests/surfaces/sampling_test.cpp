@@ -84,7 +84,13 @@ TEST(Sampling, rejects_zero_count_and_negative_noise) {
     (void)sample_surface(*square, {10, -0.1, false, 1});
     ADD_FAILURE() << "no exception";
   } catch (const InvalidOptions& e) {
-    EXPECT_STREQ(e.what(), "noise must be >= 0 (got -0.1)");
+    EXPECT_STREQ(e.what(), "noise must be in [0, 1], a fraction of the diagonal (got -0.1)");
+  }
+  try {
+    (void)sample_surface(*square, {10, 1e300, false, 1});
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidOptions& e) {
+    EXPECT_STREQ(e.what(), "noise must be in [0, 1], a fraction of the diagonal (got 1e+300)");
   }
 }
 
