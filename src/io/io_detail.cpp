@@ -1,6 +1,7 @@
 // Shared io helpers: one-line error messages, whole-file reading, tokenizing and exact number text.
 #include "io_detail.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -95,21 +96,45 @@ bool parse_int(std::string_view token, std::int64_t& value) {
   return ec == std::errc();
 }
 
-void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
+namespace {
+
+template <class IsSeparator>
+void split(std::string_view line, std::vector<std::string_view>& tokens, IsSeparator is_separator) {
   tokens.clear();
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && is_space(line[i])) {
+    while (i < line.size() && is_separator(line[i])) {
       ++i;
     }
     const std::size_t start = i;
-    while (i < line.size() && !is_space(line[i])) {
+    while (i < line.size() && !is_separator(line[i])) {
       ++i;
     }
     if (i > start) {
       tokens.push_back(line.substr(start, i - start));
     }
   }
+}
+
+}  // namespace
+
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) { split(line, tokens, is_space); }
+
+void split_fields(std::string_view line, std::vector<std::string_view>& tokens) {
+  if (line.find(',') == std::string_view::npos) return split_tokens(line, tokens);
+  // Each comma ends a field, so an empty one ("1,,2") stays a token and fails as no number.
+  tokens.clear();
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = std::min(line.find(',', start), line.size());
+    std::string_view field = line.substr(start, end - start);
+    while (!field.empty() && is_space(field.front())) field.remove_prefix(1);
+    while (!field.empty() && is_space(field.back())) field.remove_suffix(1);
+    tokens.push_back(field);
+    if (end == line.size()) break;
+    start = end + 1;
+  }
+  if (tokens.size() == 1 && tokens.front().empty()) tokens.clear();
 }
 
 std::string_view strip_comment(std::string_view line) {

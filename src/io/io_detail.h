@@ -38,6 +38,10 @@ bool parse_int(std::string_view token, std::int64_t& value);
 
 /// Append the whitespace-separated tokens of `line` to `tokens` (after clearing it).
 void split_tokens(std::string_view line, std::vector<std::string_view>& tokens);
+/// The fields of a point or curve file's line: separated by commas when it has any (each
+/// comma ends one, so "1,,2" has an empty field; spaces around fields trimmed), else by white
+/// space (split_tokens).
+void split_fields(std::string_view line, std::vector<std::string_view>& tokens);
 
 /// `line` without anything from the first `#` on.
 std::string_view strip_comment(std::string_view line);

@@ -1,4 +1,5 @@
-// Reader of plain-text point sets (.xyz/.pts/.txt): 3 or 6 numbers per line.
+// Reader of plain-text point sets (.xyz/.pts/.txt): 3 or 6 numbers per line, separated by
+// white space or commas.
 #include "io_detail.h"
 
 #include <cmath>
@@ -15,7 +16,7 @@ PointSet read_xyz(const std::filesystem::path& path) {
   std::size_t columns = 0;
   std::size_t columns_line = 0;
   while (lines.next(line)) {
-    split_tokens(strip_comment(line), tokens);
+    split_fields(strip_comment(line), tokens);
     if (tokens.empty()) {
       continue;
     }
@@ -23,7 +24,8 @@ PointSet read_xyz(const std::filesystem::path& path) {
     if (columns == 0) {
       if (tokens.size() != 3 && tokens.size() != 6) {
         fail_at(path, line_number,
-                "expected 3 or 6 numbers, got " + std::to_string(tokens.size()));
+                "expected 3 or 6 numbers (x y z, or x y z nx ny nz), got " + std::to_string(tokens.size()) +
+                    ": other columns (intensity, colour) are not read; keep the first 3 or 6");
       }
       columns = tokens.size();
       columns_line = line_number;

@@ -34,7 +34,7 @@ Polyline read_polyline_file(const std::filesystem::path& path) {
   bool cgal_format = false;
   std::size_t first_line = 0;
   while (lines.next(line)) {
-    detail::split_tokens(detail::strip_comment(line), tokens);
+    detail::split_fields(detail::strip_comment(line), tokens);
     if (tokens.empty()) {
       continue;
     }

@@ -55,7 +55,27 @@ TEST_F(PointReader, reads_doubles_exactly) {
 TEST_F(PointReader, reports_line_of_wrong_column_count) {
   const auto file = write("a.xyz", "# comment\n\n1 2\n");
   EXPECT_EQ(io_error_of([&] { read_points(file); }),
-            file.string() + ":3: expected 3 or 6 numbers, got 2");
+            file.string() + ":3: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 2: other columns "
+                            "(intensity, colour) are not read; keep the first 3 or 6");
+  // x y z intensity, as scanners export them
+  const auto four = write("b.xyz", "1 2 3 0.5\n");
+  EXPECT_EQ(io_error_of([&] { read_points(four); }),
+            four.string() + ":1: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 4: other columns "
+                            "(intensity, colour) are not read; keep the first 3 or 6");
+}
+
+// Files exported as comma-separated values read the same, with or without spaces.
+TEST_F(PointReader, reads_comma_separated_columns) {
+  const PointSet points = read_points(write("a.xyz", "1,2,3, 0,0,1\n4, 5.5 ,6,0, 1,0\n"));
+  ASSERT_EQ(points.size(), 2U);
+  ASSERT_TRUE(points.has_normals());
+  testing::expect_same_point(Point3(4, 5.5, 6), points.points[1]);
+  EXPECT_EQ(points.normals[1], Vector3(0, 1, 0));
+  const auto empty_field = write("b.xyz", "1,2,,3\n");
+  EXPECT_EQ(io_error_of([&] { read_points(empty_field); }), empty_field.string() + ":1: expected 3 or 6 numbers "
+            "(x y z, or x y z nx ny nz), got 4: other columns (intensity, colour) are not read; keep the first 3 or 6");
+  const auto missing = write("c.xyz", "1,,3\n");
+  EXPECT_EQ(io_error_of([&] { read_points(missing); }), missing.string() + ":1: expected a number, got ''");
 }
 
 TEST_F(PointReader, reports_inconsistent_column_count) {
