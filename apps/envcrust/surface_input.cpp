@@ -84,12 +84,32 @@ PointSet read_boundary_points(const std::vector<std::string>& files) {
   return all;
 }
 
+// Six columns whose last three are whole numbers in 0..255 on every line, some above 1:
+// colours (x y z r g b, a common export), which read as normals would all point into one
+// octant and set every envelope sample wrong.
+bool columns_look_like_colours(const std::string& spec, const std::vector<Vector3>& normals) {
+  const std::string extension = io::extension_of(spec);
+  if (normals.empty() || (extension != "xyz" && extension != "pts" && extension != "txt")) return false;
+  bool above_one = false;
+  for (const Vector3& n : normals) {
+    for (const double c : {n.x(), n.y(), n.z()}) {
+      if (!(c >= 0 && c <= 255 && c == std::floor(c))) return false;
+      above_one = above_one || c > 1;
+    }
+  }
+  return above_one;
+}
+
 // The points of a point file as the stages need them: normals scaled to unit length (files
 // store them at any length; the envelope offsets by rho times the normal) and a zero one
 // refused, and repeated points merged (scans repeat points where views overlap; a copy would
 // read as a zero spacing), each keeping its first occurrence's normal; refused with the
 // file's name when fewer than 5 are left or all lie on a line.
 PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::string>& notes) {
+  if (columns_look_like_colours(spec, read.normals)) {
+    read.normals.clear();
+    notes.push_back("columns 4-6 are whole numbers in 0..255 on every line: read as colours, not normals");
+  }
   for (std::size_t i = 0; i < read.normals.size(); ++i) {
     const double length = std::sqrt(read.normals[i].squared_length());
     if (!(length > 0) || !std::isfinite(length))

@@ -795,10 +795,35 @@ TEST_F(CliTest, reconstruct_checks_every_output_before_it_runs) {
 
 // Normals in a point file may have any length (they are scaled to unit length), but not
 // zero: the error names the file and the point (counted from 1 in file order).
+// x y z r g b: the last three columns, whole numbers in 0..255, are colours; read as normals
+// they would all point into one octant. They are dropped and the normals estimated, with a
+// note; the open cylinder comes out with its two rims. Normals that are whole numbers but
+// none above 1 stay normals.
+TEST_F(CliTest, six_columns_of_colours_are_not_read_as_normals) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 4000 -q -o " + path("c.xyz")).exit_code, 0);
+  {
+    std::ifstream in(path("c.xyz"));
+    std::ofstream out(path("rgb.xyz"));
+    std::string line;
+    for (int i = 0; std::getline(in, line); ++i) out << line << " " << (i * 7) % 256 << " 128 0\n";
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("rgb.xyz") + " -o " + path("c.ply") + " --json");
+  const std::string note = "columns 4-6 are whole numbers in 0..255 on every line: read as colours, not normals";
+  EXPECT_NE(std::find(j["notes"].begin(), j["notes"].end(), note), j["notes"].end()) << j["notes"];
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  {
+    std::ofstream out(path("unit.xyz"));
+    for (int i = 0; i < 40; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << " 0 0 1\n";
+  }
+  const auto unit = run_envcrust_json("boundary " + path("unit.xyz") + " --json");
+  EXPECT_EQ(std::find(unit["notes"].begin(), unit["notes"].end(), note), unit["notes"].end()) << unit["notes"];
+}
+
 TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {
   {
     std::ofstream out(path("n.xyz"));
-    for (int i = 0; i < 40; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << " 0 0 " << (i == 6 ? 0 : 3) << "\n";
+    for (int i = 0; i < 40; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << " 0 0 " << (i == 6 ? 0 : 2.5) << "\n";
   }
   expect_reconstruct_refuses("n.xyz", "point 7 has a zero normal");
 }
