@@ -13,6 +13,7 @@
 #include "envcrust/surfaces.h"
 #include "envcrust/topology.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <optional>
@@ -109,6 +110,11 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
   if (columns_look_like_colours(spec, read.normals)) {
     read.normals.clear();
     notes.push_back("columns 4-6 are whole numbers in 0..255 on every line: read as colours, not normals");
+  } else if (!read.normals.empty() && std::all_of(read.normals.begin(), read.normals.end(),
+                                                  [](const Vector3& n) { return n == Vector3(0, 0, 0); })) {
+    // Exporters write (0, 0, 0) where they have no normals: none given, not each one zero.
+    read.normals.clear();
+    notes.push_back("every normal in the file is zero: read as no normals");
   }
   for (std::size_t i = 0; i < read.normals.size(); ++i) {
     const double length = std::sqrt(read.normals[i].squared_length());

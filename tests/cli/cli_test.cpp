@@ -826,6 +826,18 @@ TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {
     for (int i = 0; i < 40; ++i) out << std::cos(0.3 * i) << " " << std::sin(0.3 * i) << " " << 0.05 * i << " 0 0 " << (i == 6 ? 0 : 2.5) << "\n";
   }
   expect_reconstruct_refuses("n.xyz", "point 7 has a zero normal");
+  // All of them zero (an exporter's placeholder): no normals given, and they are estimated.
+  ASSERT_EQ(run_envcrust("sample cylinder -n 4000 -q -o " + path("c.xyz")).exit_code, 0);
+  {
+    std::ifstream in(path("c.xyz"));
+    std::ofstream out(path("zeros.xyz"));
+    std::string line;
+    while (std::getline(in, line)) out << line << " 0 0 0\n";
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("zeros.xyz") + " -o " + path("z.ply") + " --json");
+  const std::string note = "every normal in the file is zero: read as no normals";
+  EXPECT_NE(std::find(j["notes"].begin(), j["notes"].end(), note), j["notes"].end()) << j["notes"];
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
 }
 
 // A few stray points make the widest gaps of the input; the warning about gaps counts the
