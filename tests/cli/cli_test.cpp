@@ -737,8 +737,8 @@ TEST_F(CliTest, reconstruct_names_a_boundary_curve_below_its_resolution) {
   EXPECT_NE(std::find(j["warnings"].begin(), j["warnings"].end(), expected.str()), j["warnings"].end()) << j["warnings"];
 
   // Detected: a hole of radius 0.12 punched in 10,000 samples reads as a loop 4.6 local
-  // spacings wide, which the stripe hint would name (--boundary-min-width), but the envelope
-  // closes it anyway: no hint.
+  // spacings wide beside the rims' 32.4, which the stripe hint's widths alone would name
+  // (--boundary-min-width), but the envelope closes it anyway: no hint.
   ASSERT_EQ(run_envcrust("sample cylinder -n 10000 -q -o " + path("c10k.xyz")).exit_code, 0);
   auto holed = envcrust::io::read_points(path("c10k.xyz"));
   std::erase_if(holed.points, [](const envcrust::Point3& p) {
