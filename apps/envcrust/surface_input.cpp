@@ -30,9 +30,11 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
   naming_input(spec, [&] { mesh::check_coordinates(mesh.vertices, "vertex"); });
   out.source = "mesh";
   out.kind.is_builtin = false;
-  if (const std::size_t dropped = mesh::remove_duplicate_faces(mesh); dropped > 0)
-    out.notes.push_back(std::to_string(dropped) + " repeated or degenerate faces dropped");
-  if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
+  const std::size_t dropped = mesh::remove_duplicate_faces(mesh);
+  if (mesh.triangles.empty())
+    throw InvalidInput(spec + ": the mesh has no faces but " + std::to_string(dropped) +
+                       " that use a vertex twice");  // a repeated face keeps one copy
+  if (dropped > 0) out.notes.push_back(std::to_string(dropped) + " repeated or degenerate faces dropped");
   const auto vertex_normals = normals::mesh_vertex_normal_lines(mesh);
   try {
     out.samples.boundary = boundary::mesh_boundary_curves(mesh, vertex_normals);

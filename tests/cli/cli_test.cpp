@@ -957,6 +957,11 @@ TEST_F(CliTest, reconstruct_refuses_a_mesh_of_zero_area_naming_it) {
     f << "OFF\n3 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n3 0 2 1\n";  // collinear, and again reversed
   }
   expect_reconstruct_refuses("flat.off", "the mesh has no face of positive area");
+  {
+    std::ofstream f(path("twice.off"));
+    f << "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n3 2 1 2\n";  // each face uses a vertex twice
+  }
+  expect_reconstruct_refuses("twice.off", "the mesh has no faces but 2 that use a vertex twice");
 }
 
 TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {
