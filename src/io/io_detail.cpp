@@ -96,18 +96,15 @@ bool parse_int(std::string_view token, std::int64_t& value) {
   return ec == std::errc();
 }
 
-namespace {
-
-template <class IsSeparator>
-void split(std::string_view line, std::vector<std::string_view>& tokens, IsSeparator is_separator) {
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
   tokens.clear();
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && is_separator(line[i])) {
+    while (i < line.size() && is_space(line[i])) {
       ++i;
     }
     const std::size_t start = i;
-    while (i < line.size() && !is_separator(line[i])) {
+    while (i < line.size() && !is_space(line[i])) {
       ++i;
     }
     if (i > start) {
@@ -115,10 +112,6 @@ void split(std::string_view line, std::vector<std::string_view>& tokens, IsSepar
     }
   }
 }
-
-}  // namespace
-
-void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) { split(line, tokens, is_space); }
 
 void split_fields(std::string_view line, std::vector<std::string_view>& tokens) {
   if (line.find(',') == std::string_view::npos) return split_tokens(line, tokens);
@@ -134,7 +127,6 @@ void split_fields(std::string_view line, std::vector<std::string_view>& tokens) 
     if (end == line.size()) break;
     start = end + 1;
   }
-  if (tokens.size() == 1 && tokens.front().empty()) tokens.clear();
 }
 
 std::string_view strip_comment(std::string_view line) {

@@ -143,17 +143,23 @@ bool fails(const RunDefects& d, const envelope::EnvelopeSamples& envelope, std::
 
 }  // namespace
 
+namespace {
+
+// Handles and cross-caps of a manifold run beyond the bound (all of them when it is unknown).
+long excess_genus(long genus, std::optional<long> max_genus) { return std::max(0L, genus - max_genus.value_or(0)); }
+
+}  // namespace
+
 std::size_t RunDefects::count(std::optional<long> max_genus) const {
   if (!genus) return std::numeric_limits<std::size_t>::max();
-  const long excess = std::max(0L, *genus - max_genus.value_or(0));
-  return missing_curves + extra_loops + static_cast<std::size_t>(excess);
+  return missing_curves + extra_loops + static_cast<std::size_t>(excess_genus(*genus, max_genus));
 }
 
 bool RunDefects::is_better_than(const RunDefects& other, std::optional<long> max_genus) const {
   const std::size_t mine = count(max_genus), theirs = other.count(max_genus);
   if (mine != theirs) return mine < theirs;
   if (!genus || !other.genus) return false;
-  return std::max(0L, *genus - max_genus.value_or(0)) < std::max(0L, *other.genus - max_genus.value_or(0));
+  return excess_genus(*genus, max_genus) < excess_genus(*other.genus, max_genus);
 }
 
 analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
