@@ -3,6 +3,7 @@
 
 #include "envcrust/types.h"
 
+#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -31,6 +32,13 @@ class NearestIndex {
     Search search(*tree_, q, 1, 0, true, Distance(map_));
     const auto it = search.begin();
     return {it->first, std::sqrt(it->second)};
+  }
+  /// Whether some point lies within distance r of q (a range query that stops at the first
+  /// hit: much cheaper than nearest() for a q far from every point, where the kd-tree may have
+  /// to visit many leaves at about the same distance, such as a point on a cylinder's axis).
+  [[nodiscard]] bool any_within(const Point3& q, double r) const {
+    const CGAL::Fuzzy_sphere<Traits> sphere(q, r, 0.0, Traits(map_));
+    return tree_->search_any_point(sphere).has_value();
   }
   /// The k nearest points (index, distance), nearest first.
   std::vector<std::pair<std::size_t, double>> nearest(const Point3& q, unsigned k) const {

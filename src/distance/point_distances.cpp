@@ -1,6 +1,8 @@
-// Point-to-mesh (AABB tree) and point-to-points (kd-tree) distances, in parallel with oneTBB.
+// Point-to-mesh (AABB tree) and point-to-points (kd-tree) distances, in parallel with oneTBB,
+// queried along a Hilbert curve (consecutive queries visit the same part of the tree).
 #include "envcrust/distance.h"
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -50,10 +52,13 @@ std::vector<double> distances_to_mesh(const std::vector<Point3>& points, const T
   TriangleTree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
   std::vector<double> d(points.size());
+  const std::vector<std::size_t> order = mesh::hilbert_order(points);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                      for (std::size_t at = r.begin(); at != r.end(); ++at) {
+                        const std::size_t i = order[at];
                         d[i] = std::sqrt(tree.squared_distance(points[i]));
+                      }
                     });
   return d;
 }
@@ -63,9 +68,11 @@ std::vector<double> distances_to_points(const std::vector<Point3>& points, const
   NeighborSearch::Tree tree(reference.begin(), reference.end());
   tree.build();
   std::vector<double> d(points.size());
+  const std::vector<std::size_t> order = mesh::hilbert_order(points);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                      for (std::size_t at = r.begin(); at != r.end(); ++at) {
+                        const std::size_t i = order[at];
                         NeighborSearch search(tree, points[i], 1);
                         d[i] = std::sqrt(search.begin()->second);
                       }

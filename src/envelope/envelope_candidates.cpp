@@ -2,6 +2,7 @@
 #include "envelope_candidates.h"
 #include "input_tree.h"
 
+#include "envcrust/mesh.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/random.h"
 
@@ -42,8 +43,12 @@ NeighbourDistances neighbour_distances(const std::vector<Point3>& points, const 
   out.rk.assign(points.size(), 0.0);
   if (points.empty()) return out;
   const unsigned k = std::min<unsigned>(kNeighbors + 1, static_cast<unsigned>(points.size()));
+  // Queries along a Hilbert curve: consecutive ones visit the same part of the tree (each
+  // result is the same in any order).
+  const std::vector<std::size_t> order = mesh::hilbert_order(points);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+    for (std::size_t at = r.begin(); at != r.end(); ++at) {
+      const std::size_t i = order[at];
       // Hits come nearest first; the first is the sample itself (or a duplicate of it).
       PointSearch search(tree, points[i], k);
       unsigned rank = 0;

@@ -204,10 +204,17 @@ std::size_t filter_components(TaggedMesh& t, const NearestIndex& nearest,
 std::size_t drop_far_faces(TaggedMesh& t, const NearestIndex& nearest, const std::vector<double>& max_distance) {
   if (t.mesh.triangles.empty() || nearest.empty()) return 0;
   std::vector<char> remove(t.mesh.triangles.size(), 0);
+  // A face with no sample within the largest allowed distance is far whatever its nearest
+  // sample; the range test settles it without the nearest-point search.
+  const double farthest_allowed = *std::max_element(max_distance.begin(), max_distance.end());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, t.mesh.triangles.size(), 1024), [&](const auto& range) {
     for (std::size_t f = range.begin(); f != range.end(); ++f) {
       const auto& tri = t.mesh.triangles[f];
       const Point3 centre = CGAL::centroid(t.mesh.vertices[tri[0]], t.mesh.vertices[tri[1]], t.mesh.vertices[tri[2]]);
+      if (!nearest.any_within(centre, farthest_allowed)) {
+        remove[f] = 1;
+        continue;
+      }
       const auto [j, distance] = nearest.nearest(centre);
       remove[f] = distance > max_distance[j] ? 1 : 0;
     }

@@ -15,7 +15,7 @@ std::vector<std::size_t> hilbert_order(const std::vector<Point3>& points) {
   std::vector<std::size_t> order(points.size());  // the property map's key type
   std::iota(order.begin(), order.end(), std::size_t{0});
   using Map = CGAL::Pointer_property_map<Point3>::const_type;
-  CGAL::hilbert_sort(order.begin(), order.end(),
+  CGAL::hilbert_sort<CGAL::Parallel_tag>(order.begin(), order.end(),
                      CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(points)));
   return order;
 }

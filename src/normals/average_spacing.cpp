@@ -25,7 +25,7 @@ double average_spacing(const std::vector<Point3>& points, int k) {
   // loop, here a Hilbert order (neighbour queries in a row stay in one part of the tree: 1M
   // random points, 1.8 s in input order, 1.0 s with the sort).
   std::vector<Point3> sorted = points;
-  CGAL::hilbert_sort(sorted.begin(), sorted.end());
+  CGAL::hilbert_sort<CGAL::Parallel_tag>(sorted.begin(), sorted.end());
   return CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(sorted, neighbors);
 }
 
