@@ -196,7 +196,7 @@ void register_boundary(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "boundary", "Find the boundary curves of a point cloud (as reconstruct does) and report them, alone");
   sub->add_option("input", cmd->input,
-                  "A point file (.xyz/.pts/.txt/.ply; normals optional), builtin:NAME (sampled without its "
+                  "A point file (.xyz/.pts/.txt/.csv/.ply; normals optional), builtin:NAME (sampled without its "
                   "normals and boundary, which are then estimated), or a mesh (its border loops)")
       ->required();
   sub->add_option("-o,--output", cmd->output,

@@ -111,7 +111,7 @@ void run_powercrust(PowerCrustCommand& cmd) {
 void register_powercrust(CLI::App& app) {
   auto cmd = std::make_shared<PowerCrustCommand>();
   CLI::App* sub = app.add_subcommand("powercrust", "Run the Power Crust on a point set (closed surfaces)");
-  sub->add_option("input", cmd->input, "Point file (.xyz/.pts/.txt/.ply, or a mesh's vertices) or builtin:NAME")
+  sub->add_option("input", cmd->input, "Point file (.xyz/.pts/.txt/.csv/.ply, or a mesh's vertices) or builtin:NAME")
       ->required();
   sub->add_option("-o,--output", cmd->output, "Crust mesh (.ply/.off/.obj)")->required();
   sub->add_option("--medial-axis", cmd->medial_axis_output, "Write the inner power shape's triangles as a mesh");

@@ -60,7 +60,7 @@ std::optional<double> parse_rho(const std::string& text) {
 }
 
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
-  sub.add_option("input", cmd.input, "builtin:NAME, a point file (.xyz/.pts/.txt/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
+  sub.add_option("input", cmd.input, "builtin:NAME, a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
   sub.add_option("--rho", cmd.rho,
                  "Envelope radius: 'auto' (half the estimated reach, raised to bridge the gaps of "

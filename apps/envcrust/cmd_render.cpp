@@ -286,7 +286,7 @@ void register_render(CLI::App& app) {
   auto cmd = std::make_shared<RenderCommand>();
   CLI::App* sub = app.add_subcommand("render", "Render meshes, point clouds, balls and boundary loops to a PNG");
   sub->add_option("inputs", cmd->inputs,
-                  "Meshes (.ply/.off/.obj/.stl), point files (.xyz/.pts/.txt/.ply) or builtin:NAME; "
+                  "Meshes (.ply/.off/.obj/.stl), point files (.xyz/.pts/.txt/.csv/.ply) or builtin:NAME; "
                   "several inputs become panels side by side")
       ->required();
   sub->add_option("-o,--output", cmd->output, "PNG file to write")->required();

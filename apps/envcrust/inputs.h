@@ -15,7 +15,7 @@ bool is_builtin_spec(const std::string& spec);
 TriangleMesh load_mesh(const std::string& spec);
 
 /// A reference for the analyzer: a mesh file (.off/.obj/.stl, or .ply with faces), a point
-/// file (.xyz/.pts/.txt, or .ply without faces), or "builtin:NAME" (its exact tessellation and
+/// file (.xyz/.pts/.txt/.csv, or .ply without faces), or "builtin:NAME" (its exact tessellation and
 /// its true boundary curves).
 analysis::Reference load_reference(const std::string& spec);
 

@@ -92,7 +92,7 @@ PointSet read_boundary_points(const std::vector<std::string>& files) {
 // octant and set every envelope sample wrong.
 bool columns_look_like_colours(const std::string& spec, const std::vector<Vector3>& normals) {
   const std::string extension = io::extension_of(spec);
-  if (normals.empty() || (extension != "xyz" && extension != "pts" && extension != "txt")) return false;
+  if (normals.empty() || (extension != "xyz" && extension != "pts" && extension != "txt" && extension != "csv")) return false;
   bool above_one = false;
   for (const Vector3& n : normals) {
     for (const double c : {n.x(), n.y(), n.z()}) {

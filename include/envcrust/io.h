@@ -14,8 +14,11 @@
 namespace envcrust::io {
 
 /// Read a point set, format chosen by extension (case-insensitive):
-///  - `.xyz/.pts/.txt`: 3 or 6 numbers per line (position, optional normal); `#` comments and
-///    blank lines allowed; every data line must have the same column count as the first.
+///  - `.xyz/.pts/.txt/.csv`: fields separated by white space or commas; `#` comments and
+///    blank lines allowed. Either 3 or 6 numbers per line (position, optional normal), or
+///    any columns under a first line that names them (x, y, z required; nx, ny, nz read
+///    when named; the others skipped). `.pts` also skips Leica's point-count lines and reads
+///    x y z intensity [r g b] lines as positions. Every data line has the first's column count.
 ///  - `.ply`: ascii or binary (little/big endian), vertex x,y,z and optional nx,ny,nz.
 ///  - `.off/.obj/.stl`: the vertices of the mesh (normals: none).
 /// @throws IoError one line naming the file and the problem, e.g.
@@ -32,7 +35,8 @@ PolygonMesh read_polygon_mesh(const std::filesystem::path& path);
 TriangleMesh read_triangle_mesh(const std::filesystem::path& path);
 
 /// Read an ordered closed curve: `.polyline` (one point per line, or the CGAL polyline
-/// format "n x1 y1 z1 ... xn yn zn" on one line) or `.xyz/.txt/.pts` (one point per line).
+/// format "n x1 y1 z1 ... xn yn zn" on one line) or `.xyz/.txt/.pts/.csv` (one point per line,
+/// read as read_points reads them).
 /// A last point equal to the first is dropped. @throws IoError (fewer than 3 points, ...).
 Polyline read_polyline(const std::filesystem::path& path);
 

@@ -40,11 +40,11 @@ std::string extension_of(const std::filesystem::path& path) {
 
 PointSet read_points(const std::filesystem::path& path) {
   const std::string extension = extension_of(path);
-  if (extension == "xyz" || extension == "pts" || extension == "txt") {
+  if (extension == "xyz" || extension == "pts" || extension == "txt" || extension == "csv") {
     return detail::read_xyz(path);
   }
   if (extension != "ply" && extension != "off" && extension != "obj" && extension != "stl") {
-    detail::unknown_extension(path, ".xyz, .pts, .txt, .ply, .off, .obj, .stl");
+    detail::unknown_extension(path, ".xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl");
   }
   detail::RawMesh mesh = read_raw_mesh(path, extension);
   if (mesh.vertices.empty()) {

@@ -74,10 +74,10 @@ Polyline read_polyline(const std::filesystem::path& path) {
   Polyline curve;
   if (extension == "polyline") {
     curve = read_polyline_file(path);
-  } else if (extension == "xyz" || extension == "txt" || extension == "pts") {
+  } else if (extension == "xyz" || extension == "txt" || extension == "pts" || extension == "csv") {
     curve = detail::read_xyz(path).points;
   } else {
-    detail::unknown_extension(path, ".polyline, .xyz, .txt, .pts");
+    detail::unknown_extension(path, ".polyline, .xyz, .txt, .pts, .csv");
   }
   // A point repeated in a row is one vertex (a zero-length edge says nothing), and closed
   // curves are stored without repeating their first point.

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iterator>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -793,8 +793,6 @@ TEST_F(CliTest, reconstruct_checks_every_output_before_it_runs) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
-// Normals in a point file may have any length (they are scaled to unit length), but not
-// zero: the error names the file and the point (counted from 1 in file order).
 // x y z r g b: the last three columns, whole numbers in 0..255, are colours; read as normals
 // they would all point into one octant. They are dropped and the normals estimated, with a
 // note; the open cylinder comes out with its two rims. Normals that are whole numbers but
@@ -820,6 +818,37 @@ TEST_F(CliTest, six_columns_of_colours_are_not_read_as_normals) {
   EXPECT_EQ(std::find(unit["notes"].begin(), unit["notes"].end(), note), unit["notes"].end()) << unit["notes"];
 }
 
+// Exports with more columns read by their header's names (CloudCompare's "//X,Y,Z,..." CSV)
+// or, in Leica's .pts, as point counts and x y z intensity r g b: the same points, the same
+// two rims as the plain file.
+TEST_F(CliTest, csv_with_a_header_and_leica_pts_read_as_the_plain_points) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 4000 --seed 2 -q -o " + path("c.xyz")).exit_code, 0);
+  {
+    std::ifstream in(path("c.xyz"));
+    std::ofstream csv(path("c.csv"));
+    std::ofstream pts(path("c.pts"));
+    csv << "//X,Y,Z,R,G,B,Intensity\n";
+    pts << "4000\n";
+    std::string line;
+    for (int i = 0; std::getline(in, line); ++i) {
+      std::istringstream fields(line);
+      std::string x, y, z;
+      fields >> x >> y >> z;
+      csv << x << "," << y << "," << z << "," << i % 256 << ",128,0," << 0.001 * i << "\n";
+      pts << x << " " << y << " " << z << " " << -i % 2000 << " " << i % 256 << " 128 0\n";
+    }
+  }
+  const auto plain = run_envcrust_json("boundary " + path("c.xyz") + " --json");
+  for (const char* name : {"c.csv", "c.pts"}) {
+    const auto j = run_envcrust_json(std::string("boundary ") + path(name) + " --json");
+    EXPECT_EQ(j["points"], 4000) << name;
+    EXPECT_EQ(j["curves"].size(), 2u) << name;
+    EXPECT_EQ(j["curves"], plain["curves"]) << name;
+  }
+}
+
+// Normals in a point file may have any length (they are scaled to unit length), but not
+// zero: the error names the file and the point (counted from 1 in file order).
 TEST_F(CliTest, reconstruct_refuses_a_zero_normal_naming_the_point) {
   {
     std::ofstream out(path("n.xyz"));

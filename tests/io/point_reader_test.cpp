@@ -1,4 +1,4 @@
-// Tests of the plain-text point readers (.xyz/.pts/.txt) through read_points.
+// Tests of the plain-text point readers (.xyz/.pts/.txt/.csv) through read_points.
 #include "envcrust/io.h"
 #include "io_test_support.h"
 
@@ -34,8 +34,9 @@ TEST_F(PointReader, reads_six_columns_as_points_and_normals) {
   EXPECT_EQ(points.normals[1], Vector3(0, 1, 0));
 }
 
-TEST_F(PointReader, accepts_txt_and_upper_case_extensions) {
+TEST_F(PointReader, accepts_txt_csv_and_upper_case_extensions) {
   EXPECT_EQ(read_points(write("a.txt", "1 2 3\n")).size(), 1U);
+  EXPECT_EQ(read_points(write("c.csv", "1,2,3\n")).size(), 1U);
   EXPECT_EQ(read_points(write("b.XYZ", "1 2 3")).size(), 1U);
 }
 
@@ -56,12 +57,12 @@ TEST_F(PointReader, reports_line_of_wrong_column_count) {
   const auto file = write("a.xyz", "# comment\n\n1 2\n");
   EXPECT_EQ(io_error_of([&] { read_points(file); }),
             file.string() + ":3: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 2: other columns "
-                            "(intensity, colour) are not read; keep the first 3 or 6");
+                            "(intensity, colour) are not read; keep the first 3 or 6, or name the columns in a header line (x y z ...)");
   // x y z intensity, as scanners export them
   const auto four = write("b.xyz", "1 2 3 0.5\n");
   EXPECT_EQ(io_error_of([&] { read_points(four); }),
             four.string() + ":1: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 4: other columns "
-                            "(intensity, colour) are not read; keep the first 3 or 6");
+                            "(intensity, colour) are not read; keep the first 3 or 6, or name the columns in a header line (x y z ...)");
 }
 
 // Files exported as comma-separated values read the same, with or without spaces.
@@ -73,9 +74,63 @@ TEST_F(PointReader, reads_comma_separated_columns) {
   EXPECT_EQ(points.normals[1], Vector3(0, 1, 0));
   const auto empty_field = write("b.xyz", "1,2,,3\n");
   EXPECT_EQ(io_error_of([&] { read_points(empty_field); }), empty_field.string() + ":1: expected 3 or 6 numbers "
-            "(x y z, or x y z nx ny nz), got 4: other columns (intensity, colour) are not read; keep the first 3 or 6");
+            "(x y z, or x y z nx ny nz), got 4: other columns (intensity, colour) are not read; keep the first 3 or 6, or name the columns in a header line (x y z ...)");
   const auto missing = write("c.xyz", "1,,3\n");
   EXPECT_EQ(io_error_of([&] { read_points(missing); }), missing.string() + ":1: expected a number, got ''");
+}
+
+// A first line of names picks the columns by name, whatever else the file holds.
+TEST_F(PointReader, a_header_line_names_the_columns_and_the_others_are_skipped) {
+  const PointSet csv = read_points(write("a.csv",
+                                         "//X,Y,Z,R,G,B,Nx,Ny,Nz,Intensity\n"
+                                         "1,2,3,255,0,0,0,0,1,0.5\n"
+                                         "4,5,6,0,255,0,0,1,0,0.25\n"));
+  ASSERT_EQ(csv.size(), 2U);
+  ASSERT_TRUE(csv.has_normals());
+  testing::expect_same_point(Point3(4, 5, 6), csv.points[1]);
+  EXPECT_EQ(csv.normals[0], Vector3(0, 0, 1));
+  // columns in another order, quoted names, white space; intensity text is never parsed
+  const PointSet reordered = read_points(write("b.txt", "\"intensity\" \"z\" \"y\" \"x\"\nhigh 3 2 1\n"));
+  ASSERT_EQ(reordered.size(), 1U);
+  EXPECT_FALSE(reordered.has_normals());
+  testing::expect_same_point(Point3(1, 2, 3), reordered.points[0]);
+  const PointSet spelled = read_points(write("c.xyz", "x y z normal_x normal_y normal_z\n0 0 0 1 0 0\n"));
+  EXPECT_EQ(spelled.normals.at(0), Vector3(1, 0, 0));
+}
+
+TEST_F(PointReader, a_header_without_x_y_z_or_with_part_of_a_normal_is_refused) {
+  const auto no_z = write("a.csv", "# export\nx,y,intensity\n1,2,3\n");
+  EXPECT_EQ(io_error_of([&] { read_points(no_z); }),
+            no_z.string() + ":2: a header line must name the x, y and z columns (and may name nx, ny, nz), got "
+                            "'x', 'y', 'intensity'");
+  const auto part = write("b.csv", "x,y,z,nx,ny\n1,2,3,0,1\n");
+  EXPECT_EQ(io_error_of([&] { read_points(part); }),
+            part.string() + ":1: the header names some normal columns but not all three (nx, ny, nz), got "
+                            "'x', 'y', 'z', 'nx', 'ny'");
+  const auto short_line = write("c.csv", "x,y,z,i\n1,2,3,4\n1,2,3\n");
+  EXPECT_EQ(io_error_of([&] { read_points(short_line); }),
+            short_line.string() + ":3: expected 4 fields (as the header on line 1 names), got 3");
+  const auto bad = write("d.csv", "x,y,z\n1,2,three\n");
+  EXPECT_EQ(io_error_of([&] { read_points(bad); }), bad.string() + ":2: expected a number, got 'three'");
+  const auto only_header = write("e.csv", "x,y,z\n");
+  EXPECT_EQ(io_error_of([&] { read_points(only_header); }), only_header.string() + ": no points");
+}
+
+// Leica's .pts: a point count before each scan, then x y z intensity [r g b].
+TEST_F(PointReader, pts_files_skip_point_counts_and_read_intensity_columns_as_positions) {
+  const PointSet seven = read_points(write("a.pts", "2\n1 2 3 -120 10 20 30\n4 5 6 -80 40 50 60\n1\n7 8 9 0 0 0 0\n"));
+  ASSERT_EQ(seven.size(), 3U);
+  EXPECT_FALSE(seven.has_normals());
+  testing::expect_same_point(Point3(7, 8, 9), seven.points[2]);
+  const PointSet four = read_points(write("b.pts", "1\n1 2 3 0.5\n"));
+  ASSERT_EQ(four.size(), 1U);
+  testing::expect_same_point(Point3(1, 2, 3), four.points[0]);
+  // elsewhere a lone number is no count and four columns are not a position
+  const auto xyz = write("c.xyz", "2\n1 2 3\n");
+  EXPECT_EQ(io_error_of([&] { read_points(xyz); }),
+            xyz.string() + ":1: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 1: other columns "
+                           "(intensity, colour) are not read; keep the first 3 or 6, or name the columns in a "
+                           "header line (x y z ...)");
 }
 
 TEST_F(PointReader, reports_inconsistent_column_count) {

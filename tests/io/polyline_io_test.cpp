@@ -36,6 +36,11 @@ TEST_F(PolylineIo, reads_one_point_per_line_and_drops_repeated_first_point) {
   expect_same_curve({Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)}, read_polyline(file));
 }
 
+TEST_F(PolylineIo, reads_a_csv_curve_with_a_header_line) {
+  const auto file = write("c.csv", "x,y,z,t\n0,0,0,0.0\n1,0,0,0.3\n0,1,0,0.6\n");
+  expect_same_curve({Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)}, read_polyline(file));
+}
+
 TEST_F(PolylineIo, refuses_second_polyline_in_cgal_format) {
   const auto file = write("c.polyline", "3 0 0 0 1 0 0 0 1 0\n3 0 0 0 1 0 0 0 1 0\n");
   EXPECT_EQ(io_error_of([&] { read_polyline(file); }),
@@ -69,7 +74,7 @@ TEST_F(PolylineIo, reports_non_finite_coordinate) {
 TEST_F(PolylineIo, reports_unknown_extension) {
   const auto file = write("c.ply", "ply\n");
   EXPECT_EQ(io_error_of([&] { read_polyline(file); }),
-            file.string() + ": unknown extension '.ply' (expected .polyline, .xyz, .txt, .pts)");
+            file.string() + ": unknown extension '.ply' (expected .polyline, .xyz, .txt, .pts, .csv)");
 }
 
 }  // namespace
