@@ -226,8 +226,15 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   std::vector<char> folds(candidates.size(), 0);
   const double noise_allowance = 3.0 * out.noise;
   const bool is_adaptive = options.rho_mode == RhoMode::Adaptive;
+  // Queried along a Hilbert curve of the candidates (each test is independent of the order;
+  // in generation order each query missed the cache: 1M-point cylinder file, 2.3 -> 0.8 s).
+  std::vector<Point3> candidate_positions;
+  candidate_positions.reserve(candidates.size());
+  for (const auto& c : candidates) candidate_positions.push_back(c.position);
+  const std::vector<std::size_t> order = mesh::hilbert_order(candidate_positions);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+    for (std::size_t at = r.begin(); at != r.end(); ++at) {
+      const std::size_t i = order[at];
       const double d = std::sqrt(nearest_distance2(candidates[i].position));
       const double clearance =
           candidates[i].part == EnvelopePart::Sheet ? options.sheet_clearance : options.rim_clearance;
