@@ -55,11 +55,12 @@ void append_point(std::string& out, const Point3& p);
 /// Write `buffer` to `out` and clear it once it is large (always when `force`).
 void flush_buffer(std::ostream& out, std::string& buffer, bool force = false);
 
-/// Walks a text buffer line by line, counting lines from 1 and dropping a trailing '\r'.
+/// Walks a text buffer line by line, counting lines from 1 and dropping a trailing '\r' (and,
+/// from a whole file, the UTF-8 byte-order mark that spreadsheet exports put first).
 class LineCursor {
  public:
   explicit LineCursor(std::string_view text, std::size_t first_line = 1)
-      : text_(text), next_line_(first_line) {}
+      : text_(text), pos_(first_line == 1 && text.starts_with("\xEF\xBB\xBF") ? 3 : 0), next_line_(first_line) {}
   /// Next line into `line`; false at the end of the text.
   bool next(std::string_view& line);
   /// Number of the line returned by the last next().

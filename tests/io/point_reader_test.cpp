@@ -96,6 +96,9 @@ TEST_F(PointReader, a_header_line_names_the_columns_and_the_others_are_skipped) 
   testing::expect_same_point(Point3(1, 2, 3), reordered.points[0]);
   const PointSet spelled = read_points(write("c.xyz", "x y z normal_x normal_y normal_z\n0 0 0 1 0 0\n"));
   EXPECT_EQ(spelled.normals.at(0), Vector3(1, 0, 0));
+  // a spreadsheet's export starts with a UTF-8 byte-order mark
+  EXPECT_EQ(read_points(write("d.csv", "\xEF\xBB\xBFX,Y,Z\n1,2,3\n")).size(), 1U);
+  EXPECT_EQ(read_points(write("e.csv", "\xEF\xBB\xBF" "1,2,3\n")).size(), 1U);
 }
 
 TEST_F(PointReader, a_header_without_x_y_z_or_with_part_of_a_normal_is_refused) {
