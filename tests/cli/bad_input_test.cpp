@@ -68,7 +68,10 @@ TEST_F(BadInputFile, every_point_reader_refusal_is_one_line_naming_the_file_and_
 TEST_F(BadInputFile, analyze_refuses_point_files_and_broken_meshes_by_name) {
   const BadFile cases[] = {
       {"none.off", "<absent>", ": cannot open file"},
-      {"points.xyz", "0 0 0\n", ": unknown extension '.xyz' (expected .off, .obj, .ply, .stl)"},
+      {"points.xyz", "0 0 0\n", ": a point file, not a mesh: analyze reads meshes (.ply, .off, .obj, .stl); "
+                                "reconstruct it first, or give it as --reference, or as --curve if it is an ordered "
+                                "closed curve"},
+      {"points.foo", "0 0 0\n", ": unknown extension '.foo' (expected .off, .obj, .ply, .stl)"},
       {"trunc.ply", truncated_ply(), ": truncated binary data (vertex 0 of 3)"},
       {"trunc.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", ": unexpected end of file (vertex 2 of 3)"},
   };
