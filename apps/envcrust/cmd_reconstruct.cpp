@@ -362,7 +362,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   }
   j["warnings"] = warnings;
   const std::vector<std::string> hints =
-      report ? scan_hints(loaded, cmd.options, *report, unresolved_curves) : std::vector<std::string>{};
+      report ? scan_hints(loaded, cmd.options, *report, unresolved_curves, result.envelope) : std::vector<std::string>{};
   j["hints"] = hints;
   // Every output is written once nothing can fail any more, so a failed run leaves none.
   const std::string report_text = json_text(j);

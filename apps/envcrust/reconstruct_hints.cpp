@@ -1,6 +1,9 @@
 // The hints of `envcrust reconstruct` for scans.
 #include "reconstruct_hints.h"
 
+#include "envcrust/nearest_index.h"
+#include "envcrust/union_find.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -61,11 +64,45 @@ std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded, const 
   return h.str();
 }
 
+// Groups of samples joined by chains of neighbours (each one's 8 nearest) within `reach`:
+// at least as many as the pieces of the union of balls of radius reach / 2 around them.
+std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
+  if (points.empty()) return 0;
+  const NearestIndex index(points);
+  topology::UnionFind groups(points.size());
+  const auto k = static_cast<unsigned>(std::min<std::size_t>(9, points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (const auto& [j, d] : index.nearest(points[i], k))
+      if (d <= reach) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
+  std::vector<std::uint32_t> label;
+  return groups.label_sets(label);
+}
+
+// A point file whose result falls into more pieces than its samples form (within 2 rho, where
+// the envelope's balls overlap) was too sparse for the estimated normals or the envelope's
+// sheet: the direct Power Crust needs no normals and copes with sparser samples of a closed
+// surface (the original program's knotted tube, 1,281 points: 6 pieces here, a torus there).
+std::optional<std::string> pieces_hint(const LoadedSurface& loaded, const analysis::AnalysisReport& report,
+                                       const envelope::EnvelopeSamples& envelope) {
+  const std::size_t pieces = report.topology.components.size();
+  if (loaded.source != "points" || pieces < 2 || envelope.rho <= 0) return std::nullopt;
+  const std::size_t groups = sample_groups(loaded.samples.points, 2.0 * envelope.rho);
+  if (pieces <= groups) return std::nullopt;
+  std::ostringstream h;
+  h << std::setprecision(4) << "the result has " << pieces << " pieces where the samples form " << groups
+    << (groups == 1 ? " connected set" : " connected sets") << " (neighbours within 2 rho = " << 2.0 * envelope.rho
+    << "): the sample may be too sparse for the estimated normals and the envelope (rho " << envelope.rho
+    << ", estimated reach " << envelope.reach.reach
+    << "); if the surface is closed, --method powercrust, which needs no normals, copes with sparser samples";
+  return h.str();
+}
+
 }  // namespace
 
 std::vector<std::string> scan_hints(const LoadedSurface& loaded, const pipeline::ReconstructOptions& options,
                                     const analysis::AnalysisReport& report,
-                                    const std::vector<std::size_t>& unresolved_curves) {
+                                    const std::vector<std::size_t>& unresolved_curves,
+                                    const envelope::EnvelopeSamples& envelope) {
   const auto& sheet = options.sheet;
   if (loaded.kind.is_builtin || options.method != pipeline::Method::Envelope ||
       options.extraction != pipeline::Extraction::Sheet)
@@ -91,6 +128,7 @@ std::vector<std::string> scan_hints(const LoadedSurface& loaded, const pipeline:
       << " also removes the ones up to twice as wide";
   if (!h.str().empty()) hints.push_back(h.str());
   if (const auto stripes = narrow_loops_hint(loaded, unresolved_curves)) hints.push_back(*stripes);
+  if (const auto pieces = pieces_hint(loaded, report, envelope)) hints.push_back(*pieces);
   return hints;
 }
 

@@ -568,6 +568,49 @@ TEST_F(CliTest, reconstruct_a_torus_point_cloud_keeps_its_handle_with_a_hint) {
                            "handles, --cut-handles 3 also removes the ones up to twice as wide");
 }
 
+// A torus sampled too sparsely for estimated normals (400 points) falls into pieces although
+// its samples are one connected set within 2 rho: the hint says so and names the direct Power
+// Crust, which gets the torus. Two spheres apart come out as two pieces, as their samples
+// are: no hint.
+TEST_F(CliTest, a_result_in_more_pieces_than_its_samples_hints_at_the_direct_power_crust) {
+  ASSERT_EQ(run_envcrust("sample torus -n 400 --seed 1 -q -o " + path("t.xyz")).exit_code, 0);
+  const auto j = run_envcrust_json("reconstruct " + path("t.xyz") + " -o " + path("t.ply") + " --json");
+  const auto pieces = j["analysis"]["components"].get<int>();
+  ASSERT_GT(pieces, 1);
+  const double rho = j["envelope"]["rho"].get<double>();
+  std::ostringstream expected;
+  expected << std::setprecision(4) << "the result has " << pieces
+           << " pieces where the samples form 1 connected set (neighbours within 2 rho = " << 2 * rho
+           << "): the sample may be too sparse for the estimated normals and the envelope (rho " << rho
+           << ", estimated reach " << j["envelope"]["reach"]["reach"].get<double>()
+           << "); if the surface is closed, --method powercrust, which needs no normals, copes with sparser samples";
+  EXPECT_NE(std::find(j["hints"].begin(), j["hints"].end(), expected.str()), j["hints"].end()) << j["hints"];
+  const auto direct = run_envcrust_json("reconstruct " + path("t.xyz") + " --method powercrust -o " + path("d.ply") +
+                                        " --json");
+  EXPECT_EQ(direct["analysis"]["components"], 1);
+  EXPECT_EQ(direct["analysis"]["euler_characteristic"], 0);
+
+  ASSERT_EQ(run_envcrust("sample sphere -n 2000 --seed 1 -q -o " + path("s.xyz")).exit_code, 0);
+  {
+    std::ifstream in(path("s.xyz"));
+    std::ofstream out(path("two.xyz"));
+    std::string line;
+    std::vector<std::string> lines;
+    while (std::getline(in, line)) lines.push_back(line);
+    for (const auto& l : lines) out << l << "\n";
+    for (const auto& l : lines) {
+      std::istringstream fields(l);
+      double x = 0, y = 0, z = 0;
+      fields >> x >> y >> z;
+      out << std::setprecision(17) << x + 5 << " " << y << " " << z << "\n";
+    }
+  }
+  const auto two = run_envcrust_json("reconstruct " + path("two.xyz") + " -o " + path("two.ply") + " --json");
+  EXPECT_EQ(two["analysis"]["components"], 2);
+  EXPECT_EQ(two["analysis"]["euler_characteristic"], 4);
+  EXPECT_EQ(two["hints"], nlohmann::json::array());
+}
+
 // An orientable mesh says its surface is orientable: the sheet is cut to an orientable one by
 // default (--orientable=auto), and --orientable=no or --cut-handles 0 turn the cuts off.
 TEST_F(CliTest, reconstruct_an_orientable_mesh_with_the_scan_cuts_by_default) {
