@@ -56,8 +56,7 @@ void run_analyze(AnalyzeCommand& cmd) {
   }
   if (cmd.mesh.empty()) throw UsageError("analyze: a MESH (or --curve CURVE) is required");
   cmd.options.use_knots = !cmd.no_knots;
-  if (const std::string ext = io::extension_of(cmd.mesh);
-      !is_builtin_spec(cmd.mesh) && (ext == "xyz" || ext == "pts" || ext == "txt" || ext == "csv")) {
+  if (!is_builtin_spec(cmd.mesh) && io::is_text_point_file(cmd.mesh)) {
     throw IoError(cmd.mesh + ": a point file, not a mesh: analyze reads meshes (.ply, .off, .obj, .stl); "
                   "reconstruct it first, or give it as --reference, or as --curve if it is an ordered closed curve");
   }

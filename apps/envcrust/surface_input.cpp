@@ -91,8 +91,7 @@ PointSet read_boundary_points(const std::vector<std::string>& files) {
 // colours (x y z r g b, a common export), which read as normals would all point into one
 // octant and set every envelope sample wrong.
 bool columns_look_like_colours(const std::string& spec, const std::vector<Vector3>& normals) {
-  const std::string extension = io::extension_of(spec);
-  if (normals.empty() || (extension != "xyz" && extension != "pts" && extension != "txt" && extension != "csv")) return false;
+  if (normals.empty() || !io::is_text_point_file(spec)) return false;
   bool above_one = false;
   for (const Vector3& n : normals) {
     for (const double c : {n.x(), n.y(), n.z()}) {

@@ -114,4 +114,7 @@ render::Image read_png(const std::filesystem::path& path);
 /// Lower-case extension without the dot ("ply", "xyz"); "" when none.
 std::string extension_of(const std::filesystem::path& path);
 
+/// Whether the file's extension is one of the plain-text point formats (.xyz/.pts/.txt/.csv).
+bool is_text_point_file(const std::filesystem::path& path);
+
 }  // namespace envcrust::io

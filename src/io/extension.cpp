@@ -38,9 +38,14 @@ std::string extension_of(const std::filesystem::path& path) {
   return extension;
 }
 
+bool is_text_point_file(const std::filesystem::path& path) {
+  const std::string extension = extension_of(path);
+  return extension == "xyz" || extension == "pts" || extension == "txt" || extension == "csv";
+}
+
 PointSet read_points(const std::filesystem::path& path) {
   const std::string extension = extension_of(path);
-  if (extension == "xyz" || extension == "pts" || extension == "txt" || extension == "csv") {
+  if (is_text_point_file(path)) {
     return detail::read_xyz(path);
   }
   if (extension != "ply" && extension != "off" && extension != "obj" && extension != "stl") {

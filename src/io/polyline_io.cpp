@@ -74,7 +74,7 @@ Polyline read_polyline(const std::filesystem::path& path) {
   Polyline curve;
   if (extension == "polyline") {
     curve = read_polyline_file(path);
-  } else if (extension == "xyz" || extension == "txt" || extension == "pts" || extension == "csv") {
+  } else if (is_text_point_file(path)) {
     curve = detail::read_xyz(path).points;
   } else {
     detail::unknown_extension(path, ".polyline, .xyz, .txt, .pts, .csv");
