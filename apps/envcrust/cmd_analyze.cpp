@@ -56,7 +56,7 @@ void run_analyze(AnalyzeCommand& cmd) {
   }
   if (cmd.mesh.empty()) throw UsageError("analyze: a MESH (or --curve CURVE) is required");
   cmd.options.use_knots = !cmd.no_knots;
-  if (!is_builtin_spec(cmd.mesh) && io::is_text_point_file(cmd.mesh)) {
+  if (!is_parametric_spec(cmd.mesh) && io::is_text_point_file(cmd.mesh)) {
     throw IoError(cmd.mesh + ": a point file, not a mesh: analyze reads meshes (.ply, .off, .obj, .stl); "
                   "reconstruct it first, or give it as --reference, or as --curve if it is an ordered closed curve");
   }
@@ -83,9 +83,9 @@ void register_analyze(CLI::App& app) {
       "analyze",
       "Report a mesh's topology (manifoldness, Euler characteristic, orientability, genus,\n"
       "boundary loops with knot types, linking numbers) and, with --reference, its distances");
-  sub->add_option("mesh", cmd->mesh, "Mesh file (.ply/.off/.obj/.stl) or builtin:NAME");
+  sub->add_option("mesh", cmd->mesh, "Mesh file (.ply/.off/.obj/.stl), builtin:NAME, or a NURBS patch (.igs/.iges/.json; its tessellation)");
   sub->add_option("-r,--reference", cmd->reference,
-                  "Reference: mesh file, point file, or builtin:NAME (its fine tessellation, chord error below 1e-4 of the diagonal, and boundary curves)");
+                  "Reference: mesh file, point file, builtin:NAME or a NURBS patch (.igs/.iges/.json) (its fine tessellation, chord error below 1e-4 of the diagonal, and boundary curves)");
   sub->add_option("--curve", cmd->curve,
                   "Analyze the knot type of one closed polyline (.polyline/.xyz) instead of a mesh");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");

@@ -142,7 +142,7 @@ void run_boundary(BoundaryCommand& cmd) {
   std::optional<analysis::Reference> reference;
   if (!cmd.reference.empty()) {
     reference = load_reference(cmd.reference);
-  } else if (is_builtin_spec(cmd.input)) {
+  } else if (is_parametric_spec(cmd.input)) {
     reference = load_reference(cmd.input);
   }
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
@@ -196,8 +196,8 @@ void register_boundary(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "boundary", "Find the boundary curves of a point cloud (as reconstruct does) and report them, alone");
   sub->add_option("input", cmd->input,
-                  "A point file (.xyz/.pts/.txt/.csv/.ply; normals optional), builtin:NAME (sampled without its "
-                  "normals and boundary, which are then estimated), or a mesh (its border loops)")
+                  "A point file (.xyz/.pts/.txt/.csv/.ply; normals optional), builtin:NAME or a NURBS patch (.igs/.iges/.json; sampled "
+                  "without its normals and boundary, which are then estimated), or a mesh (its border loops)")
       ->required();
   sub->add_option("-o,--output", cmd->output,
                   "Write the curves: .polyline, one closed curve per file (FILE.i.polyline when several), or "
@@ -206,12 +206,12 @@ void register_boundary(CLI::App& app) {
   sub->add_option("--points-out", cmd->points_output,
                   "Write the samples the curves were fitted to (.xyz/.ply, normals = their outward conormals)");
   sub->add_option("-r,--reference", cmd->reference,
-                  "True boundary to compare with: builtin:NAME or a mesh (its border loops); builtin inputs "
-                  "default to their own surface");
-  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME inputs")
+                  "True boundary to compare with: builtin:NAME, a NURBS patch or a mesh (its border loops); "
+                  "builtin and NURBS inputs default to their own surface");
+  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
-  sub->add_option("--noise", cmd->sampling.noise_rel_diag, "Gaussian noise on builtin:NAME samples, fraction of the diagonal")
+  sub->add_option("--noise", cmd->sampling.noise_rel_diag, "Gaussian noise on builtin:NAME and NURBS patch samples, fraction of the diagonal")
       ->capture_default_str()
       ->check(number_above(0, true));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();

@@ -60,7 +60,7 @@ std::optional<double> parse_rho(const std::string& text) {
 }
 
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
-  sub.add_option("input", cmd.input, "builtin:NAME, a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
+  sub.add_option("input", cmd.input, "builtin:NAME, a NURBS patch (.igs/.iges IGES entity 128, .json NURBS-Python), a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
   sub.add_option("--rho", cmd.rho,
                  "Envelope radius: 'auto' (half the estimated reach, raised to bridge the gaps of "
@@ -75,11 +75,11 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "Envelope sample spacing as a fraction of rho")
       ->capture_default_str()
       ->check(number_in(0, 4, false, true));
-  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME inputs")
+  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
   sub.add_option("--noise", cmd.sampling.noise_rel_diag,
-                 "Gaussian noise on builtin:NAME samples, fraction of the diagonal")
+                 "Gaussian noise on builtin:NAME and NURBS patch samples, fraction of the diagonal")
       ->capture_default_str()
       ->check(number_above(0, true));
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
@@ -321,13 +321,13 @@ void run_reconstruct(ReconstructCommand& cmd) {
   std::optional<double> boundary_gap;  // of the reference's boundary from the samples, / diagonal
   std::vector<std::size_t> unresolved_curves;  // input curves below the resolution (boundary check)
   if (!cmd.no_analysis) {
-    // The truth when known: the exact surface of a built-in, a mesh input's own surface (its
+    // The truth when known: the exact surface of a built-in or a NURBS patch, a mesh input's own surface (its
     // vertices alone would count the triangles' size as error); else the input points.
     analysis::Reference reference;
     if (given_reference) {
       reference = std::move(*given_reference);
       j["reference"] = cmd.reference;
-    } else if (is_builtin_spec(cmd.input) || loaded.source == "mesh") {
+    } else if (is_parametric_spec(cmd.input) || loaded.source == "mesh") {
       reference = load_reference(cmd.input);
       j["reference"] = cmd.input;
     } else {

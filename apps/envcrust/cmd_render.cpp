@@ -82,7 +82,7 @@ render::View parse_view(const std::string& text) {
 }
 
 std::string default_caption(const std::string& spec) {
-  if (is_builtin_spec(spec)) return spec.substr(spec.find(':') + 1);
+  if (is_builtin_spec(spec)) return spec.substr(spec.find(':') + 1);  // a NURBS file: its file name
   return std::filesystem::path(spec).filename().string();
 }
 
@@ -117,7 +117,7 @@ PanelScene panel_scene(const RenderCommand& cmd, const std::string& spec) {
   render::CurveLayer loops;
   if (cmd.tube_radius) loops.radius = *cmd.tube_radius;
   if (!cmd.boundary_color.empty()) loops.colors = {parse_color("--boundary-color", cmd.boundary_color)};
-  loops.loops = reference.boundary;  // builtins: their exact boundary curves
+  loops.loops = reference.boundary;  // builtins and NURBS patches: their exact boundary curves
   panel.summary = {{"input", spec}, {"triangles", 0}, {"points", 0}};
   if (reference.mesh) {
     if (cmd.use_boundary && loops.loops.empty()) {
@@ -286,7 +286,7 @@ void register_render(CLI::App& app) {
   auto cmd = std::make_shared<RenderCommand>();
   CLI::App* sub = app.add_subcommand("render", "Render meshes, point clouds, balls and boundary loops to a PNG");
   sub->add_option("inputs", cmd->inputs,
-                  "Meshes (.ply/.off/.obj/.stl), point files (.xyz/.pts/.txt/.csv/.ply) or builtin:NAME; "
+                  "Meshes (.ply/.off/.obj/.stl), point files (.xyz/.pts/.txt/.csv/.ply) builtin:NAME or NURBS patches (.igs/.iges/.json); "
                   "several inputs become panels side by side")
       ->required();
   sub->add_option("-o,--output", cmd->output, "PNG file to write")->required();
@@ -306,7 +306,7 @@ void register_render(CLI::App& app) {
   sub->add_option("--point-radius", cmd->point_radius, "Radius of point spheres in model units (default 0.4% of the diagonal)")
       ->check(number_above(0));
   sub->add_flag("--boundary", cmd->use_boundary,
-                "Draw the boundary loops of mesh inputs as tubes (builtin:NAME inputs always show theirs)");
+                "Draw the boundary loops of mesh inputs as tubes (builtin:NAME and NURBS inputs always show theirs)");
   sub->add_option("--tube-radius", cmd->tube_radius, "Radius of boundary tubes in model units (default 0.6% of the diagonal)")
       ->check(number_above(0));
   sub->add_option("--boundary-color", cmd->boundary_color, "One colour for all boundary tubes, #rrggbb (default: a palette)");
@@ -328,8 +328,8 @@ void register_render(CLI::App& app) {
       ->capture_default_str()
       ->check(whole_number_in(4, 512));
   sub->add_option("--error-to", cmd->error_reference,
-                  "Colour the meshes by the distance of each vertex to this reference (a mesh, builtin:NAME's exact "
-                  "surface, or a point file): blue 0 to red at --error-max; the title gives the scale");
+                  "Colour the meshes by the distance of each vertex to this reference (a mesh, the exact "
+                  "surface of builtin:NAME or a NURBS patch, or a point file): blue 0 to red at --error-max; the title gives the scale");
   sub->add_option("--error-max", cmd->error_max,
                   "With --error-to: the distance drawn red (default: the largest over all panels)")
       ->check(number_above(0));

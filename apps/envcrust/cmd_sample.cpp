@@ -1,7 +1,8 @@
-// `envcrust sample`: points or an exact tessellation of a built-in surface, and the list.
+// `envcrust sample`: points or an exact tessellation of a built-in surface or NURBS patch, and the list.
 #include "cli_common.h"
 #include "commands.h"
 #include "curve_output.h"
+#include "inputs.h"
 
 #include "envcrust/io.h"
 #include "envcrust/surfaces.h"
@@ -68,7 +69,7 @@ void run_sample(const SampleCommand& cmd) {
   if (!cmd.output.empty()) io::check_output_path(cmd.output, cmd.mesh ? io::OutputKind::Mesh : io::OutputKind::Points);
   if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Polyline);
   check_distinct_outputs({{"-o", cmd.output}, {"--boundary-out", cmd.boundary_output}});
-  const auto surface = surfaces::make_builtin(cmd.surface);
+  const auto surface = is_parametric_spec(cmd.surface) ? parametric_surface(cmd.surface) : surfaces::make_builtin(cmd.surface);
   nlohmann::json report = {{"surface", cmd.surface}};
   if (!cmd.output.empty()) {
     if (cmd.mesh) {
@@ -116,8 +117,8 @@ void run_sample(const SampleCommand& cmd) {
 void register_sample(CLI::App& app) {
   auto cmd = std::make_shared<SampleCommand>();
   CLI::App* sub = app.add_subcommand(
-      "sample", "Sample a built-in surface uniformly by area, or write its exact tessellation");
-  sub->add_option("surface", cmd->surface, "Built-in surface name (see --list)");
+      "sample", "Sample a built-in surface or a NURBS patch uniformly by area, or write its exact tessellation");
+  sub->add_option("surface", cmd->surface, "Built-in surface name (see --list), or a NURBS patch file (.igs/.iges IGES entity 128, .json NURBS-Python)");
   sub->add_option("-o,--output", cmd->output, "Output file (.xyz/.ply points; .ply/.off/.obj with --mesh)");
   auto* count = sub->add_option("-n,--count", cmd->sampling.count, "Number of points")
                     ->capture_default_str()

@@ -7,29 +7,40 @@
 #include "envcrust/surfaces.h"
 #include "envcrust/topology.h"
 
+#include <filesystem>
+
 namespace envcrust::cli {
 namespace {
 
 constexpr std::string_view kBuiltinPrefix = "builtin:";
 constexpr std::size_t kMaxReferenceLoops = 64;
 
-std::unique_ptr<surfaces::Surface> builtin_of(const std::string& spec) {
-  return surfaces::make_builtin(spec.substr(kBuiltinPrefix.size()));
-}
-
 }  // namespace
 
 bool is_builtin_spec(const std::string& spec) { return spec.rfind(kBuiltinPrefix, 0) == 0; }
 
+bool is_parametric_spec(const std::string& spec) { return is_builtin_spec(spec) || io::is_nurbs_file(spec); }
+
+std::unique_ptr<surfaces::Surface> parametric_surface(const std::string& spec) {
+  if (is_builtin_spec(spec)) return surfaces::make_builtin(spec.substr(kBuiltinPrefix.size()));
+  if (!io::is_nurbs_file(spec)) return nullptr;
+  auto patch = io::read_nurbs_patch(spec);
+  try {
+    return surfaces::make_nurbs_surface(std::move(patch), std::filesystem::path(spec).stem().string());
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(spec + ": " + e.what());
+  }
+}
+
 TriangleMesh load_mesh(const std::string& spec) {
-  if (is_builtin_spec(spec)) return surfaces::tessellate(*builtin_of(spec));
+  if (is_parametric_spec(spec)) return surfaces::tessellate(*parametric_surface(spec));
   return io::read_triangle_mesh(spec);
 }
 
 analysis::Reference load_reference(const std::string& spec) {
   analysis::Reference reference;
-  if (is_builtin_spec(spec)) {
-    const auto surface = builtin_of(spec);
+  if (is_parametric_spec(spec)) {
+    const auto surface = parametric_surface(spec);
     reference.mesh = surfaces::tessellate(*surface);
     const double spacing = 2e-3 * surfaces::bbox_diagonal(*surface);
     for (const auto& curve : surfaces::boundary_curves(*surface, spacing))

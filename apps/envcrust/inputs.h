@@ -2,7 +2,10 @@
 #pragma once
 
 #include "envcrust/analysis.h"
+#include "envcrust/surfaces.h"
 #include "envcrust/types.h"
+
+#include <memory>
 
 #include <string>
 
@@ -11,12 +14,20 @@ namespace envcrust::cli {
 /// True for "builtin:NAME" arguments.
 bool is_builtin_spec(const std::string& spec);
 
-/// A triangle mesh from a mesh file, or the exact tessellation of "builtin:NAME".
+/// True for "builtin:NAME" and NURBS patch files (.igs/.iges/.json): surfaces whose exact
+/// geometry (normals, boundary curves) is known.
+bool is_parametric_spec(const std::string& spec);
+
+/// The exact surface of "builtin:NAME" or of a NURBS patch file; nullptr for other specs.
+/// @throws IoError or InvalidInput naming the file (a patch make_nurbs_surface refuses).
+std::unique_ptr<surfaces::Surface> parametric_surface(const std::string& spec);
+
+/// A triangle mesh from a mesh file, or the exact tessellation of a parametric spec.
 TriangleMesh load_mesh(const std::string& spec);
 
 /// A reference for the analyzer: a mesh file (.off/.obj/.stl, or .ply with faces), a point
-/// file (.xyz/.pts/.txt/.csv, or .ply without faces), or "builtin:NAME" (its exact tessellation and
-/// its true boundary curves).
+/// file (.xyz/.pts/.txt/.csv, or .ply without faces), or a parametric spec (its exact
+/// tessellation and its true boundary curves).
 analysis::Reference load_reference(const std::string& spec);
 
 }  // namespace envcrust::cli

@@ -256,10 +256,11 @@ void add_outlier_options(CLI::App& sub, BuiltinSampling& sampling) {
 
 LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampling, const Progress& progress) {
   LoadedSurface out;
-  if (!sampling.boundary_files.empty() && is_builtin_spec(spec) && !sampling.builtin_as_points)
+  if (!sampling.boundary_files.empty() && is_parametric_spec(spec) && !sampling.builtin_as_points)
     throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
-  if (is_builtin_spec(spec)) {
-    const auto surface = surfaces::make_builtin(spec.substr(std::string("builtin:").size()));
+  if (is_parametric_spec(spec)) {
+    // A NURBS patch is read as a built-in surface is (out.kind keeps is_builtin: no scan cuts).
+    const auto surface = parametric_surface(spec);
     surfaces::SampleOptions o;
     o.count = sampling.count;
     o.noise_rel_diag = sampling.noise_rel_diag;
@@ -274,7 +275,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     out.samples.points = std::move(points.points);
     out.samples.normals = std::move(points.normals);
     out.samples.boundary = surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface));
-    out.source = "builtin";
+    out.source = is_builtin_spec(spec) ? "builtin" : "nurbs";
     out.notes.push_back("exact normals and boundary curves of " + surface->name());
     return out;
   }

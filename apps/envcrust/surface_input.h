@@ -37,7 +37,7 @@ struct BuiltinSampling {
 /// give vertex and face-centre samples, area-weighted normal lines and their border loops.
 struct LoadedSurface {
   envelope::SurfaceSamples samples;
-  std::string source;                 ///< "builtin", "points", "mesh"
+  std::string source;                 ///< "builtin", "nurbs", "points", "mesh"
   /// What reconstruct's defaults depend on (pipeline::options_for_input): built-in or not,
   /// normals estimated by PCA, and a mesh's own orientability and genus (handles and
   /// cross-caps summed over components; the envelope should not add any).

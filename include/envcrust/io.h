@@ -2,6 +2,7 @@
 #pragma once
 
 #include "envcrust/image.h"
+#include "envcrust/nurbs_surface.h"
 #include "envcrust/types.h"
 
 #include <cstdint>
@@ -25,6 +26,18 @@ namespace envcrust::io {
 ///   "scan.xyz:12: expected 3 or 6 numbers, got 2", "scan.ply: truncated binary data
 ///   (vertex 17 of 100)", "a.xyz:3: non-finite coordinate", "a.xyz: no points".
 PointSet read_points(const std::filesystem::path& path);
+
+/// Read one NURBS patch, format chosen by extension: `.igs/.iges` (IGES: the file's one
+/// rational B-spline surface, entity 128, placed by its transformation matrix if any; trimmed
+/// surfaces, entities 143/144, are refused) or `.json` (NURBS-Python's exchange format: a
+/// "shape" of type "surface" with one entry, control points listed v fastest, weights optional).
+/// The patch is checked by surfaces::make_nurbs_surface, not here.
+/// @throws IoError one line naming the file and the problem, e.g. "a.igs: 2 rational B-spline
+///   surfaces (IGES entity 128): envcrust reads one patch per file (...)".
+surfaces::NurbsPatch read_nurbs_patch(const std::filesystem::path& path);
+
+/// True for the extensions read_nurbs_patch reads (.igs, .iges, .json).
+bool is_nurbs_file(const std::filesystem::path& path);
 
 /// Read a polygon mesh from `.off/.obj/.ply/.stl` (STL ascii or binary; its duplicated
 /// corners are merged by exact position). Faces must have >= 3 valid vertex indices.

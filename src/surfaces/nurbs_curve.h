@@ -1,6 +1,8 @@
 // A rational B-spline (NURBS) curve evaluated exactly, with first and second derivatives.
 #pragma once
 
+#include "bspline_basis.h"
+
 #include <Eigen/Core>
 #include <vector>
 
@@ -14,7 +16,7 @@ struct CurveJet {
 /// A NURBS curve of any degree: control points with weights and a clamped knot vector.
 class RationalBSplineCurve {
  public:
-  static constexpr int max_degree = 8;
+  static constexpr int max_degree = max_bspline_degree;
 
   /// @throws InvalidInput when the degree is outside [1, max_degree], the sizes do not satisfy
   /// knots = points + degree + 1, a weight is not positive or the knots decrease.
@@ -29,8 +31,6 @@ class RationalBSplineCurve {
   [[nodiscard]] CurveJet evaluate(double t) const;
 
  private:
-  [[nodiscard]] int find_span(double t) const;
-
   int degree_;
   std::vector<Eigen::Vector3d> control_points_;
   std::vector<double> weights_;

@@ -1,0 +1,36 @@
+// A user's NURBS patch (from a CAD exchange file) as a parametric surface with exact geometry.
+#pragma once
+
+#include "envcrust/surfaces.h"
+#include "envcrust/types.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envcrust::surfaces {
+
+/// A tensor-product rational B-spline patch as exchange files give it.
+struct NurbsPatch {
+  int degree_u = 0, degree_v = 0;
+  std::size_t count_u = 0, count_v = 0;  ///< control points along u and along v
+  std::vector<double> knots_u, knots_v;  ///< count + degree + 1 each, non-decreasing
+  /// count_u * count_v points and weights, u index fastest: P(i, j) = control_points[i + count_u * j].
+  std::vector<Point3> control_points;
+  std::vector<double> weights;  ///< > 0; all 1 for a polynomial patch
+  /// [u0, u1, v0, v1] within the knots' valid range; nullopt: the whole valid range.
+  std::optional<std::array<double, 4>> parameter_range;
+};
+
+/// The patch as a Surface: exact jet (second derivatives by the quotient rule), the edges
+/// that coincide glued (periodic, or reversed as on a Moebius strip), edges that collapse to a
+/// point made poles, and the expected topology derived from that (the knot type of each
+/// boundary loop from its polyline). `name` names the surface in reports (a file's stem).
+/// @throws InvalidInput with a one-line reason (degree outside 1..8, sizes, a weight not
+///   > 0, a non-finite value, decreasing knots, an empty parameter range, collapsed edges in
+///   both directions, a Klein bottle, S_u x S_v vanishing inside the patch).
+std::unique_ptr<Surface> make_nurbs_surface(NurbsPatch patch, std::string name);
+
+}  // namespace envcrust::surfaces

@@ -1,0 +1,90 @@
+// NURBS patch files (IGES entity 128, NURBS-Python JSON) through the binary: sampled with
+// exact normals and boundary curves, reconstructed, used as references, and refused by name.
+#include "cli_fixture.h"
+#include "fixtures/nurbs_patches.h"
+#include "run_command.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace envcrust::testing {
+namespace {
+
+class NurbsInput : public CliTest {
+ protected:
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+};
+
+/// The analysis of a result: a manifold with the given topology within 0.5% of the diagonal.
+void expect_result(const nlohmann::json& a, int euler_characteristic, int loops, bool is_orientable) {
+  EXPECT_EQ(a["euler_characteristic"], euler_characteristic);
+  EXPECT_EQ(a["boundary_loops"], loops);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_EQ(a["is_orientable"], is_orientable);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.005);
+}
+
+TEST_F(NurbsInput, reconstructs_a_json_cylinder_patch_open_with_its_exact_boundary) {
+  const std::string file = write("cyl.json", geomdl_json(cylinder_patch()));
+  const auto j = run_envcrust_json("reconstruct " + file + " -n 5000 -o " + path("c.ply") + " --json");
+  EXPECT_EQ(j["source"], "nurbs");
+  EXPECT_EQ(j["reference"], file);  // the exact surface is the truth
+  const auto& a = j["analysis"];
+  expect_result(a, 0, 2, true);
+  // Both true rims are matched by a reconstructed loop within 1% of the diagonal.
+  ASSERT_EQ(a["boundary_matches"].size(), 2u) << a;
+  for (const auto& b : a["boundary_matches"]) EXPECT_LT(b["hausdorff_rel_diag"].get<double>(), 0.01) << b;
+}
+
+TEST_F(NurbsInput, an_iges_sphere_is_sampled_tessellated_and_measured_against) {
+  const std::string file = write("sphere.igs", iges_text(sphere_patch()));
+  const auto s = run_envcrust_json("sample " + file + " --mesh -o " + path("s.ply") + " --json");
+  EXPECT_EQ(s["expected"]["euler_characteristic"], 2);
+  EXPECT_EQ(s["expected"]["boundary_loops"], 0);
+  const auto a = run_envcrust_json("analyze " + path("s.ply") + " --reference " + file + " --json");
+  EXPECT_EQ(a["euler_characteristic"], 2);
+  EXPECT_EQ(a["boundary_loops"], 0);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 1e-3);
+  const auto r = run_envcrust_json("reconstruct " + file + " -n 4000 -o " + path("r.ply") + " --json");
+  expect_result(r["analysis"], 2, 0, true);
+}
+
+TEST_F(NurbsInput, a_moebius_patch_comes_out_non_orientable_with_one_loop) {
+  const std::string file = write("band.json", geomdl_json(moebius_patch()));
+  const auto list = run_envcrust_json("sample " + file + " -n 10 -o " + path("b.xyz") + " --json");
+  EXPECT_EQ(list["expected"]["orientable"], false);
+  const auto j = run_envcrust_json("reconstruct " + file + " -n 4000 -o " + path("m.ply") + " --json");
+  expect_result(j["analysis"], 0, 1, false);
+}
+
+TEST_F(NurbsInput, unreadable_and_degenerate_patches_are_refused_by_name) {
+  std::string trimmed = iges_text(cylinder_patch());
+  trimmed.replace(trimmed.find("     128       1"), 16, "     144       1");
+  write("trim.igs", trimmed);
+  expect_reconstruct_refuses("trim.igs",
+                             "a trimmed surface (IGES entity 144): trimming curves are not supported; envcrust reads "
+                             "one untrimmed rational B-spline surface (entity 128)");
+  auto patch = cylinder_patch();
+  patch.knots_u[4] = 0.1;
+  write("knots.json", geomdl_json(patch));
+  expect_reconstruct_refuses("knots.json", "NURBS surface: knots in u decrease at index 4 (0.25 then 0.1)");
+  write("curve.json", R"({"shape": {"type": "curve", "data": []}})");
+  expect_reconstruct_refuses("curve.json", "holds a NURBS curve, not a surface (shape.type must be \"surface\")");
+  // The exact boundary comes with the patch: --boundary is for point files.
+  write("cyl.json", geomdl_json(cylinder_patch()));
+  const CommandResult r = run_envcrust("reconstruct " + path("cyl.json") + " --boundary " + path("cyl.json") +
+                                       " -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "envcrust: usage error: --boundary applies to point files: " + path("cyl.json") +
+                       " brings its exact boundary\n");
+}
+
+}  // namespace
+}  // namespace envcrust::testing

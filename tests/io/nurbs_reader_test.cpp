@@ -1,0 +1,139 @@
+// Reading NURBS patches: IGES entity 128 (with a transformation matrix), NURBS-Python JSON,
+// and the files refused.
+#include "envcrust/io.h"
+#include "fixtures/nurbs_patches.h"
+#include "io_test_support.h"
+
+#include <string>
+
+namespace envcrust::io {
+namespace {
+
+using testing::io_error_of;
+namespace fixtures = envcrust::testing;
+
+class NurbsReader : public testing::TempDirTest {};
+
+void expect_same_patch(const surfaces::NurbsPatch& expected, const surfaces::NurbsPatch& actual) {
+  EXPECT_EQ(expected.degree_u, actual.degree_u);
+  EXPECT_EQ(expected.degree_v, actual.degree_v);
+  EXPECT_EQ(expected.count_u, actual.count_u);
+  EXPECT_EQ(expected.count_v, actual.count_v);
+  EXPECT_EQ(expected.knots_u, actual.knots_u);
+  EXPECT_EQ(expected.knots_v, actual.knots_v);
+  EXPECT_EQ(expected.weights, actual.weights);
+  ASSERT_EQ(expected.control_points.size(), actual.control_points.size());
+  for (std::size_t k = 0; k < expected.control_points.size(); ++k)
+    testing::expect_same_point(expected.control_points[k], actual.control_points[k]);
+}
+
+TEST_F(NurbsReader, reads_an_iges_surface_exactly_with_its_parameter_range) {
+  const auto sphere = fixtures::sphere_patch();
+  for (const char* name : {"s.igs", "S.IGES"}) {
+    const auto patch = read_nurbs_patch(write(name, fixtures::iges_text(sphere)));
+    expect_same_patch(sphere, patch);
+    ASSERT_TRUE(patch.parameter_range.has_value());
+    EXPECT_EQ(*patch.parameter_range, (std::array<double, 4>{0, 1, 0, 1}));
+  }
+}
+
+TEST_F(NurbsReader, reads_fortran_style_iges_numbers) {
+  const auto cylinder = fixtures::cylinder_patch();
+  std::string text = fixtures::iges_text(cylinder);
+  // Same width, other spellings: no leading zero, a plus sign, D and E exponents.
+  const std::string plain = "0.25,0.25,0.5,0.5,0.75,0.75", odd = ".25,+.25,.5D0,.5,7.5D-1,.75";
+  ASSERT_NE(text.find(plain), std::string::npos);
+  text.replace(text.find(plain), plain.size(), odd);
+  expect_same_patch(cylinder, read_nurbs_patch(write("c.igs", text)));
+}
+
+TEST_F(NurbsReader, places_an_iges_surface_by_its_transformation_matrix) {
+  const auto cylinder = fixtures::cylinder_patch();
+  // A quarter turn about z, then a shift by (5, 0, -2).
+  const std::array<double, 12> matrix{0, -1, 0, 5, 1, 0, 0, 0, 0, 0, 1, -2};
+  const auto patch = read_nurbs_patch(write("c.igs", fixtures::iges_text(cylinder, matrix)));
+  ASSERT_EQ(patch.control_points.size(), cylinder.control_points.size());
+  for (std::size_t k = 0; k < patch.control_points.size(); ++k) {
+    const Point3& q = cylinder.control_points[k];
+    testing::expect_same_point(Point3(5 - q.y(), q.x(), q.z() - 2), patch.control_points[k]);
+  }
+}
+
+TEST_F(NurbsReader, reads_nurbs_python_json_listed_v_fastest) {
+  const auto band = fixtures::moebius_patch();
+  const auto patch = read_nurbs_patch(write("band.json", fixtures::geomdl_json(band)));
+  expect_same_patch(band, patch);
+  EXPECT_FALSE(patch.parameter_range.has_value());
+  // Weights are optional: without them the patch is polynomial.
+  const auto plain = read_nurbs_patch(write(
+      "plain.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1, "degree_v": 1, "size_u": 2, "size_v": 2,
+        "knotvector_u": [0, 0, 1, 1], "knotvector_v": [0, 0, 1, 1],
+        "control_points": {"points": [[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 1]]}}]}})"));
+  EXPECT_EQ(plain.weights, std::vector<double>(4, 1.0));
+  testing::expect_same_point(Point3(0, 1, 0), plain.control_points[2]);  // (i 0, j 1)
+  testing::expect_same_point(Point3(1, 0, 0), plain.control_points[1]);  // (i 1, j 0)
+}
+
+TEST_F(NurbsReader, refuses_iges_files_it_cannot_read_whole) {
+  const auto cylinder = fixtures::cylinder_patch();
+  const std::string text = fixtures::iges_text(cylinder);
+  auto file = write("two.igs", fixtures::iges_text(cylinder, {}, 2));
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() +
+                ": 2 rational B-spline surfaces (IGES entity 128): envcrust reads one patch per file (sample them "
+                "into a point file or mesh them to reconstruct the whole)");
+  std::string trimmed = text;
+  trimmed.replace(trimmed.find("     128       1"), 16, "     144       1");
+  file = write("trim.igs", trimmed);
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() +
+                ": a trimmed surface (IGES entity 144): trimming curves are not supported; envcrust reads one "
+                "untrimmed rational B-spline surface (entity 128)");
+  std::string other = text;
+  for (std::size_t at = other.find("     128"); at != std::string::npos; at = other.find("     128", at))
+    other.replace(at, 8, "     126");
+  file = write("curve.igs", other);
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": no rational B-spline surface (IGES entity 128) in the file (its entities: 126)");
+  // Cut after the directory and the first parameter line: the parameters end early.
+  const std::size_t p2 = text.find("P      2");
+  file = write("short.igs", text.substr(0, text.rfind('\n', p2) + 1));
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": entity 128 (directory line 1) points to parameter lines 1 to 7, but the file has 1");
+  file = write("narrow.igs", "128,1,1,1,1;\n");
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ":1: not an IGES record (80 columns with the section letter in column 73)");
+  std::string garbled = text;
+  garbled.replace(garbled.find("0.25,"), 4, "0.2x");
+  file = write("garbled.igs", garbled);
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": entity 128 at parameter line 1: '0.2x' is not a number");
+}
+
+TEST_F(NurbsReader, refuses_json_that_is_not_one_untrimmed_surface) {
+  const auto expect_refusal = [&](const std::string& name, const std::string& text, const std::string& problem) {
+    const auto file = write(name, text);
+    EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + ": " + problem);
+  };
+  expect_refusal("a.json", "{\"shape\": [1, 2", "invalid JSON: parse error at line 1, column 16: syntax error while parsing array - unexpected end of input; expected ']'");
+  expect_refusal("b.json", R"({"shape": {"type": "curve", "data": []}})",
+                 "holds a NURBS curve, not a surface (shape.type must be \"surface\")");
+  expect_refusal("c.json", R"({"shape": {"type": "surface", "data": [{"degree_v": 1}]}})",
+                 "not a NURBS-Python surface: key 'degree_u' not found");
+  expect_refusal("d.json", R"({"shape": {"type": "surface", "data": [{}, {}]}})",
+                 "2 surfaces in shape.data: envcrust reads one patch per file");
+  expect_refusal("e.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1, "degree_v": 1, "size_u": 2,
+      "size_v": 2, "knotvector_u": [0, 0, 1, 1], "knotvector_v": [0, 0, 1, 1],
+      "control_points": {"points": [[0, 0, 0], [0, 1, 0], [1, 0, 0]]}}]}})",
+                 "3 control points, size_u x size_v = 2 x 2 expected");
+  expect_refusal("f.json", R"({"shape": {"type": "surface", "data": [{"trims": {"data": [{}]}}]}})",
+                 "a trimmed surface: trimming curves are not supported; envcrust reads one untrimmed NURBS surface");
+  const auto file = write("g.txt", "");
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": unknown extension '.txt' (expected .igs, .iges, .json)");
+  EXPECT_TRUE(is_nurbs_file("a.IGS"));
+  EXPECT_FALSE(is_nurbs_file("a.xyz"));
+}
+
+}  // namespace
+}  // namespace envcrust::io
