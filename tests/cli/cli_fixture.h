@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <unistd.h>
 #include <string>
 
 namespace envcrust::testing {
@@ -14,8 +15,11 @@ namespace envcrust::testing {
 class CliTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("envcrust_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    // Suite, test and process in the name: two suites' tests of one name, or two test runs at
+    // once (a CI clone beside a local run), never share or remove each other's folder.
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() / ("envcrust_cli_" + std::string(info->test_suite_name()) + "_" +
+                                                     info->name() + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
