@@ -65,12 +65,12 @@ TEST_F(NurbsInput, a_moebius_patch_comes_out_non_orientable_with_one_loop) {
 }
 
 TEST_F(NurbsInput, unreadable_and_degenerate_patches_are_refused_by_name) {
-  std::string trimmed = iges_text(cylinder_patch());
-  trimmed.replace(trimmed.find("     128       1"), 16, "     144       1");
-  write("trim.igs", trimmed);
+  write("trim.igs", iges_trimmed_text(cylinder_patch(), {iges_line(0, -1, 0.5, -1), iges_line(0.5, -1, 0.5, 1),
+                                                          iges_line(0.5, 1, 0, 1), iges_line(0, 1, 0, -1)}));
   expect_reconstruct_refuses("trim.igs",
-                             "a trimmed surface (IGES entity 144): trimming curves are not supported; envcrust reads "
-                             "one untrimmed rational B-spline surface (entity 128)");
+                             "a trimmed surface (IGES entity 144) whose trimming curves cut into its B-spline surface: "
+                             "trimming is not supported; envcrust reads one untrimmed rational B-spline surface "
+                             "(entity 128, or 144 trimmed along its own border)");
   auto patch = cylinder_patch();
   patch.knots_u[4] = 0.1;
   write("knots.json", geomdl_json(patch));

@@ -74,6 +74,42 @@ TEST_F(NurbsReader, reads_nurbs_python_json_listed_v_fastest) {
   testing::expect_same_point(Point3(1, 0, 0), plain.control_points[1]);  // (i 1, j 0)
 }
 
+TEST_F(NurbsReader, reads_an_iges_trimmed_surface_trimmed_along_its_own_border) {
+  const auto sphere = fixtures::sphere_patch();  // domain [0, 1] x [0, 1]
+  // N1 = 0: the outer boundary is the domain's border by definition.
+  expect_same_patch(sphere, read_nurbs_patch(write("n1.igs", fixtures::iges_trimmed_text(sphere))));
+  // The border traced by lines and a degree-1 B-spline curve (126), in pieces of any length.
+  // K 1, degree 1, flags, knots 0 0 1 1, weights 1 1, points (0, 0, 0) (0.5, 0, 0), range, normal.
+  const fixtures::IgesEntity spline{126, {"1", "1", "1", "0", "1", "0", "0", "0", "1", "1", "1", "1", "0", "0", "0",
+                                          "0.5", "0", "0", "0", "1", "0", "0", "1"}, 0};
+  const auto traced = fixtures::iges_trimmed_text(
+      sphere, {spline, fixtures::iges_line(0.5, 0, 1, 0), fixtures::iges_line(1, 0, 1, 1), fixtures::iges_line(1, 1, 0, 1),
+               fixtures::iges_line(0, 1, 0, 0)});
+  expect_same_patch(sphere, read_nurbs_patch(write("traced.igs", traced)));
+}
+
+TEST_F(NurbsReader, refuses_a_trimmed_surface_whose_trimming_cuts_into_it) {
+  const auto sphere = fixtures::sphere_patch();
+  const std::string refusal =
+      ": a trimmed surface (IGES entity 144) whose trimming curves cut into its B-spline surface: trimming is not "
+      "supported; envcrust reads one untrimmed rational B-spline surface (entity 128, or 144 trimmed along its own "
+      "border)";
+  // A smaller square inside the domain.
+  auto file = write("inner.igs", fixtures::iges_trimmed_text(
+                                     sphere, {fixtures::iges_line(0.1, 0.1, 0.9, 0.1), fixtures::iges_line(0.9, 0.1, 0.9, 0.9),
+                                              fixtures::iges_line(0.9, 0.9, 0.1, 0.9), fixtures::iges_line(0.1, 0.9, 0.1, 0.1)}));
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + refusal);
+  // Three sides only: a quarter of the border is missing.
+  file = write("three.igs", fixtures::iges_trimmed_text(sphere, {fixtures::iges_line(0, 0, 1, 0), fixtures::iges_line(1, 0, 1, 1),
+                                                                  fixtures::iges_line(1, 1, 0, 1)}));
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + refusal);
+  // A hole (N2 = 1) is trimming too.
+  std::string holed = fixtures::iges_trimmed_text(sphere);
+  holed.replace(holed.find("144,1,0,0,0;"), 12, "144,1,0,1,0;");
+  file = write("holed.igs", holed);
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + refusal + " (it has 1 inner boundaries)");
+}
+
 TEST_F(NurbsReader, refuses_iges_files_it_cannot_read_whole) {
   const auto cylinder = fixtures::cylinder_patch();
   const std::string text = fixtures::iges_text(cylinder);
@@ -82,13 +118,6 @@ TEST_F(NurbsReader, refuses_iges_files_it_cannot_read_whole) {
             file.string() +
                 ": 2 rational B-spline surfaces (IGES entity 128): envcrust reads one patch per file (sample them "
                 "into a point file or mesh them to reconstruct the whole)");
-  std::string trimmed = text;
-  trimmed.replace(trimmed.find("     128       1"), 16, "     144       1");
-  file = write("trim.igs", trimmed);
-  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
-            file.string() +
-                ": a trimmed surface (IGES entity 144): trimming curves are not supported; envcrust reads one "
-                "untrimmed rational B-spline surface (entity 128)");
   std::string other = text;
   for (std::size_t at = other.find("     128"); at != std::string::npos; at = other.find("     128", at))
     other.replace(at, 8, "     126");
