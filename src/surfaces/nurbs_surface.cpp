@@ -53,6 +53,17 @@ void check_direction(const char* name, int degree, std::size_t count, const std:
       throw InvalidInput("NURBS surface: knots in " + dir + " decrease at index " + std::to_string(k) + " (" +
                          number(knots[k - 1]) + " then " + number(knots[k]) + ")");
   }
+  // Inside the valid range a knot repeated more than `degree` times breaks the surface apart.
+  const double first = knots[static_cast<std::size_t>(degree)], last = knots[count];
+  for (std::size_t k = 0; k < knots.size();) {
+    std::size_t end = k;
+    while (end < knots.size() && knots[end] == knots[k]) ++end;
+    if (knots[k] > first && knots[k] < last && end - k > static_cast<std::size_t>(degree))
+      throw InvalidInput("NURBS surface: knot " + number(knots[k]) + " in " + dir + " is repeated " +
+                         std::to_string(end - k) + " times, more than the degree " + std::to_string(degree) +
+                         ": the surface is torn apart there");
+    k = end;
+  }
 }
 
 void check_patch(const NurbsPatch& p) {

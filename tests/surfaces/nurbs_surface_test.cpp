@@ -163,6 +163,9 @@ TEST(NurbsSurface, malformed_patches_are_refused_with_the_reason) {
   p = cylinder_patch();
   p.knots_u[4] = 0.1;
   EXPECT_EQ(refusal(p), "NURBS surface: knots in u decrease at index 4 (0.25 then 0.1)");
+  p = cylinder_patch();  // the circle's knot 0.25 three times: a quadratic torn apart
+  p.knots_u = {0, 0, 0, 0.25, 0.25, 0.25, 0.5, 0.75, 0.75, 1, 1, 1};
+  EXPECT_EQ(refusal(p), "NURBS surface: knot 0.25 in u is repeated 3 times, more than the degree 2: the surface is torn apart there");
   p = cylinder_patch();
   p.weights[10] = 0;
   EXPECT_EQ(refusal(p), "NURBS surface: the weight of control point (1, 1) is 0, weights must be finite and > 0");
