@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -62,6 +63,22 @@ TEST_F(NurbsInput, a_moebius_patch_comes_out_non_orientable_with_one_loop) {
   EXPECT_EQ(list["expected"]["orientable"], false);
   const auto j = run_envcrust_json("reconstruct " + file + " -n 4000 -o " + path("m.ply") + " --json");
   expect_result(j["analysis"], 0, 1, false);
+}
+
+TEST_F(NurbsInput, the_shipped_trefoil_ribbon_example_has_two_linked_trefoil_edges) {
+  // examples/nurbs/trefoil-ribbon.igs (scripts/make_nurbs_examples.py): a periodic cubic
+  // B-spline around a trefoil's shape, extruded along z.
+  const std::string file = std::string(ENVCRUST_SOURCE_DIR) + "/examples/nurbs/trefoil-ribbon.igs";
+  const auto s = run_envcrust_json("sample " + file + " -n 10 -o " + path("t.xyz") + " --json");
+  EXPECT_EQ(s["expected"]["boundary_knots"], nlohmann::json({"trefoil", "trefoil"}));
+  EXPECT_EQ(s["expected"]["abs_linking_number"], 3);
+  const auto j = run_envcrust_json("reconstruct " + file + " -n 5000 -o " + path("t.ply") + " --json");
+  const auto& a = j["analysis"];
+  expect_result(a, 0, 2, true);
+  ASSERT_EQ(a["loops"].size(), 2u);
+  for (const auto& loop : a["loops"]) EXPECT_EQ(loop["knot"]["type"], "trefoil");
+  ASSERT_EQ(a["linking"].size(), 1u);
+  EXPECT_EQ(std::abs(a["linking"][0]["linking_number"].get<int>()), 3);
 }
 
 TEST_F(NurbsInput, unreadable_and_degenerate_patches_are_refused_by_name) {

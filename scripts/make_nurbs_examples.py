@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Write the NURBS example patches of examples/nurbs/ (IGES entity 128 and NURBS-Python JSON).
+
+    python3 scripts/make_nurbs_examples.py [OUT_DIR]      # default examples/nurbs
+
+trefoil-ribbon.igs  a periodic cubic B-spline through a trefoil's shape, extruded 0.5 along z:
+                    a ribbon whose two edges are linked trefoils (a CAD version of the
+                    paper's Figure 1)
+moebius-band.json   a ruled band around the rational unit circle whose ruling turns half
+                    round: a Moebius strip
+sphere.igs          the unit sphere, a rational circle revolved by a rational half circle
+"""
+import json
+import math
+import os
+import sys
+
+H = math.sqrt(2) / 2
+CIRCLE = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0)]
+CIRCLE_W = [1, H, 1, H, 1, H, 1, H, 1]
+CIRCLE_KNOTS = [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1]
+
+
+class Patch:
+    """Degrees, knots, and the control net with weights, u index fastest."""
+
+    def __init__(self, degree_u, degree_v, knots_u, knots_v, count_u, count_v, points, weights):
+        self.degree_u, self.degree_v = degree_u, degree_v
+        self.knots_u, self.knots_v = knots_u, knots_v
+        self.count_u, self.count_v = count_u, count_v
+        self.points, self.weights = points, weights
+
+
+def trefoil_ribbon(samples=24):
+    def trefoil(s):
+        return (math.sin(s) + 2 * math.sin(2 * s), math.cos(s) - 2 * math.cos(2 * s), -math.sin(3 * s))
+    ring = [trefoil(2 * math.pi * k / samples) for k in range(samples)]
+    ring += ring[:3]  # a periodic cubic: the first 3 control points repeated at the end
+    count_u = len(ring)
+    points = [(x, y, z + dz) for dz in (0.0, 0.5) for (x, y, z) in ring]
+    return Patch(3, 1, list(range(count_u + 4)), [0, 0, 1, 1], count_u, 2, points, [1.0] * len(points))
+
+
+def moebius_band(half_width=0.3):
+    points, weights = [], []
+    for v in (-half_width, half_width):
+        for i, (x, y) in enumerate(CIRCLE):
+            phi = math.pi / 4 * i
+            c = math.cos(phi / 2)
+            points.append((x + v * c * math.cos(phi), y + v * c * math.sin(phi), v * math.sin(phi / 2)))
+            weights.append(CIRCLE_W[i])
+    return Patch(2, 1, CIRCLE_KNOTS, [-1, -1, 1, 1], 9, 2, points, weights)
+
+
+def sphere():
+    half = [(0, -1), (1, -1), (1, 0), (1, 1), (0, 1)]
+    half_w = [1, H, 1, H, 1]
+    points, weights = [], []
+    for j, (r, z) in enumerate(half):
+        for i, (x, y) in enumerate(CIRCLE):
+            points.append((x * r, y * r, z))
+            weights.append(CIRCLE_W[i] * half_w[j])
+    return Patch(2, 2, CIRCLE_KNOTS, [0, 0, 0, 0.5, 0.5, 1, 1, 1], 9, 5, points, weights)
+
+
+def number(x):
+    return repr(float(x)) if x != int(x) else str(int(x))
+
+
+def write_iges(patch, path, title):
+    values = [patch.count_u - 1, patch.count_v - 1, patch.degree_u, patch.degree_v, 0, 0, 0, 0, 0]
+    values += patch.knots_u + patch.knots_v + patch.weights
+    for p in patch.points:
+        values += list(p)
+    values += [patch.knots_u[patch.degree_u], patch.knots_u[patch.count_u],
+               patch.knots_v[patch.degree_v], patch.knots_v[patch.count_v]]
+    fields = ["128"] + [number(v) for v in values]
+    lines = [""]
+    for k, f in enumerate(fields):
+        f += ";" if k + 1 == len(fields) else ","
+        if len(lines[-1]) + len(f) > 64:
+            lines.append("")
+        lines[-1] += f
+
+    def record(data, section, sequence):
+        return data.ljust(72)[:72] + "%s%7d\n" % (section, sequence)
+
+    def entry(*values):
+        return "".join("%8s" % v for v in values)
+
+    out = record(title, "S", 1) + record("1H,,1H;,%dH%s,%dH%s;" % (len(title), title, len(os.path.basename(path)),
+                                                                os.path.basename(path)), "G", 1)
+    out += record(entry(128, 1, 0, 0, 0, 0, 0, 0, "00000000"), "D", 1)
+    out += record(entry(128, 0, 0, len(lines), 0), "D", 2)
+    for k, line in enumerate(lines):
+        out += record(line.ljust(64) + "%8d" % 1, "P", k + 1)
+    out += record("S%7dG%7dD%7dP%7d" % (1, 1, 2, len(lines)), "T", 1)
+    with open(path, "w") as f:
+        f.write(out)
+
+
+def write_json(patch, path):
+    # NURBS-Python lists the control points v fastest.
+    order = [i + patch.count_u * j for i in range(patch.count_u) for j in range(patch.count_v)]
+    data = {"type": "spline", "rational": True, "dimension": 3, "degree_u": patch.degree_u,
+            "degree_v": patch.degree_v, "knotvector_u": patch.knots_u, "knotvector_v": patch.knots_v,
+            "size_u": patch.count_u, "size_v": patch.count_v,
+            "control_points": {"points": [list(patch.points[k]) for k in order],
+                               "weights": [patch.weights[k] for k in order]}}
+    with open(path, "w") as f:
+        json.dump({"shape": {"type": "surface", "count": 1, "data": [data]}}, f, indent=1)
+        f.write("\n")
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "examples", "nurbs")
+    os.makedirs(out, exist_ok=True)
+    write_iges(trefoil_ribbon(), os.path.join(out, "trefoil-ribbon.igs"), "envcrust trefoil ribbon")
+    write_json(moebius_band(), os.path.join(out, "moebius-band.json"))
+    write_iges(sphere(), os.path.join(out, "sphere.igs"), "envcrust unit sphere")
+    print("wrote trefoil-ribbon.igs, moebius-band.json, sphere.igs to", os.path.normpath(out))
+
+
+if __name__ == "__main__":
+    main()
