@@ -18,8 +18,10 @@ namespace envcrust::surfaces {
 
 namespace {
 
-/// Edge points closer than this fraction of the control net's diagonal count as one.
-constexpr double kEdgeToleranceRelDiag = 1e-6;
+/// Edge points closer than this fraction of the control net's diagonal count as one: loose
+/// enough for a seam written with 6 significant digits, far below anything a reconstruction
+/// resolves (rho is a few percent of the diagonal).
+constexpr double kEdgeToleranceRelDiag = 1e-5;
 /// Points compared along an edge to decide gluing and poles.
 constexpr int kEdgeProbes = 33;
 /// Cell centres checked for a vanishing or reversing S_u x S_v inside the patch.
@@ -276,8 +278,18 @@ class NurbsSurface final : public Surface {
     t.boundary_loops = static_cast<int>(curves.size());
     std::vector<Polyline> loops;
     for (const auto& c : curves) loops.push_back(c.polyline());
-    for (const auto& loop : loops) t.boundary_knots.push_back(knots::to_string(knots::identify_knot(loop).type));
-    if (loops.size() >= 2) t.abs_linking_number = std::abs(knots::linking_number(loops[0], loops[1]));
+    // A loop that touches itself (or another) has no generic projection: "untyped", |lk| 0.
+    for (const auto& loop : loops) {
+      try {
+        t.boundary_knots.push_back(knots::to_string(knots::identify_knot(loop).type));
+      } catch (const NumericalFailure&) {
+        t.boundary_knots.push_back("untyped");
+      }
+    }
+    try {
+      if (loops.size() >= 2) t.abs_linking_number = std::abs(knots::linking_number(loops[0], loops[1]));
+    } catch (const NumericalFailure&) {
+    }
     return t;
   }
 

@@ -57,6 +57,23 @@ TEST(NurbsSurface, the_cylinder_patch_has_the_jet_of_the_builtin_nurbs_cylinder)
   EXPECT_EQ(t.abs_linking_number, 0);
 }
 
+TEST(NurbsSurface, a_seam_is_glued_within_1e_5_of_the_diagonal_and_a_slit_is_not) {
+  // The cylinder's control net has a diagonal of 2 sqrt(3) = 3.46; its last column repeats
+  // the first. Moved out by 1e-5 (3e-6 of the diagonal, a seam written with 6 digits) it is
+  // still one seam; moved out by 0.01 the patch is a slit tube: a disc with one loop.
+  for (const auto& [shift, glued] : {std::pair{1e-5, true}, std::pair{1e-2, false}}) {
+    auto p = cylinder_patch();
+    for (std::size_t j = 0; j < 2; ++j) {
+      Point3& q = p.control_points[8 + 9 * j];
+      q = Point3(q.x() + shift, q.y(), q.z());
+    }
+    const auto s = make_nurbs_surface(p, "c");
+    EXPECT_EQ(s->domain().u_gluing, glued ? Gluing::Periodic : Gluing::None) << shift;
+    EXPECT_EQ(s->expected_topology().euler_characteristic, glued ? 0 : 1) << shift;
+    EXPECT_EQ(s->expected_topology().boundary_loops, glued ? 2 : 1) << shift;
+  }
+}
+
 TEST(NurbsSurface, a_rational_jet_matches_central_differences) {
   const auto s = make_nurbs_surface(
       bezier_patch({0, 0.5, -0.2, 0, 0.3, 1.2, 0.8, -0.4, 0.1, -0.9, 1.5, 0.2, 0, 0.4, -0.3, 0},
