@@ -9,6 +9,7 @@ trefoil-ribbon.igs  a periodic cubic B-spline through a trefoil's shape, extrude
 moebius-band.json   a ruled band around the rational unit circle whose ruling turns half
                     round: a Moebius strip
 sphere.igs          the unit sphere, a rational circle revolved by a rational half circle
+plate-with-hole.igs a curved bicubic plate trimmed by a round hole (IGES trimmed surface 144)
 """
 import json
 import math
@@ -67,36 +68,58 @@ def number(x):
     return repr(float(x)) if x != int(x) else str(int(x))
 
 
-def write_iges(patch, path, title):
+def surface_values(patch):
+    """The parameters of an IGES entity 128 (after the type number)."""
     values = [patch.count_u - 1, patch.count_v - 1, patch.degree_u, patch.degree_v, 0, 0, 0, 0, 0]
     values += patch.knots_u + patch.knots_v + patch.weights
     for p in patch.points:
         values += list(p)
     values += [patch.knots_u[patch.degree_u], patch.knots_u[patch.count_u],
                patch.knots_v[patch.degree_v], patch.knots_v[patch.count_v]]
-    fields = ["128"] + [number(v) for v in values]
-    lines = [""]
-    for k, f in enumerate(fields):
-        f += ";" if k + 1 == len(fields) else ","
-        if len(lines[-1]) + len(f) > 64:
-            lines.append("")
-        lines[-1] += f
+    return values
 
+
+def write_iges(entities, path, title):
+    """entities: (type, parameter values) in order; the k-th is at directory line 2k + 1."""
     def record(data, section, sequence):
         return data.ljust(72)[:72] + "%s%7d\n" % (section, sequence)
 
     def entry(*values):
         return "".join("%8s" % v for v in values)
 
-    out = record(title, "S", 1) + record("1H,,1H;,%dH%s,%dH%s;" % (len(title), title, len(os.path.basename(path)),
-                                                                os.path.basename(path)), "G", 1)
-    out += record(entry(128, 1, 0, 0, 0, 0, 0, 0, "00000000"), "D", 1)
-    out += record(entry(128, 0, 0, len(lines), 0), "D", 2)
-    for k, line in enumerate(lines):
-        out += record(line.ljust(64) + "%8d" % 1, "P", k + 1)
-    out += record("S%7dG%7dD%7dP%7d" % (1, 1, 2, len(lines)), "T", 1)
+    name = os.path.basename(path)
+    out = record(title, "S", 1) + record("1H,,1H;,%dH%s,%dH%s;" % (len(title), title, len(name), name), "G", 1)
+    directory, parameters = "", ""
+    sequence = 0
+    for k, (kind, values) in enumerate(entities):
+        fields = [str(kind)] + [number(v) for v in values]
+        lines = [""]
+        for i, f in enumerate(fields):
+            f += ";" if i + 1 == len(fields) else ","
+            if len(lines[-1]) + len(f) > 64:
+                lines.append("")
+            lines[-1] += f
+        directory += record(entry(kind, sequence + 1, 0, 0, 0, 0, 0, 0, "00000000"), "D", 2 * k + 1)
+        directory += record(entry(kind, 0, 0, len(lines), 0), "D", 2 * k + 2)
+        for line in lines:
+            sequence += 1
+            parameters += record(line.ljust(64) + "%8d" % (2 * k + 1), "P", sequence)
+    out += directory + parameters + record("S%7dG%7dD%7dP%7d" % (1, 1, 2 * len(entities), sequence), "T", 1)
     with open(path, "w") as f:
         f.write(out)
+
+
+def plate_with_hole():
+    """A gently curved square plate (bicubic, z = 0.15 at its middle) trimmed by a round hole:
+    the surface entity 128, the trimmed surface 144 (outer boundary the domain's border, one
+    hole), the hole's curve on surface 142 and its parameter-plane circle 100."""
+    heights = [0, 0, 0, 0, 0, 0.2, 0.2, 0, 0, 0.2, 0.2, 0, 0, 0, 0, 0]
+    points = [(i / 3, j / 3, heights[i + 4 * j]) for j in range(4) for i in range(4)]
+    plate = Patch(3, 3, [0, 0, 0, 0, 1, 1, 1, 1], [0, 0, 0, 0, 1, 1, 1, 1], 4, 4, points, [1.0] * 16)
+    return [(128, surface_values(plate)),
+            (144, [1, 0, 1, 0, 5]),              # base 128, N1 = 0 (border), one hole at line 5
+            (142, [1, 1, 7, 0, 1]),              # the hole on surface 1, its parameter curve at line 7
+            (100, [0, 0.5, 0.5, 0.8, 0.5, 0.8, 0.5])]  # a full circle, centre (0.5, 0.5), radius 0.3
 
 
 def write_json(patch, path):
@@ -115,10 +138,12 @@ def write_json(patch, path):
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "examples", "nurbs")
     os.makedirs(out, exist_ok=True)
-    write_iges(trefoil_ribbon(), os.path.join(out, "trefoil-ribbon.igs"), "envcrust trefoil ribbon")
+    write_iges([(128, surface_values(trefoil_ribbon()))], os.path.join(out, "trefoil-ribbon.igs"),
+               "envcrust trefoil ribbon")
     write_json(moebius_band(), os.path.join(out, "moebius-band.json"))
-    write_iges(sphere(), os.path.join(out, "sphere.igs"), "envcrust unit sphere")
-    print("wrote trefoil-ribbon.igs, moebius-band.json, sphere.igs to", os.path.normpath(out))
+    write_iges([(128, surface_values(sphere()))], os.path.join(out, "sphere.igs"), "envcrust unit sphere")
+    write_iges(plate_with_hole(), os.path.join(out, "plate-with-hole.igs"), "envcrust plate with a hole")
+    print("wrote trefoil-ribbon.igs, moebius-band.json, sphere.igs, plate-with-hole.igs to", os.path.normpath(out))
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 
 #include "envcrust/types.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -64,6 +65,13 @@ class Surface {
   [[nodiscard]] virtual SurfaceJet evaluate(double u, double v) const = 0;
   [[nodiscard]] virtual ExpectedTopology expected_topology() const = 0;
 
+  /// A trimmed surface: the closed loops of the parameter plane (first point not repeated)
+  /// that bound the kept region, its boundary; empty (the default) for a surface that is its
+  /// whole parameter domain, whose boundary is the domain's unglued edges.
+  [[nodiscard]] virtual std::vector<std::vector<std::array<double, 2>>> trim_loops() const { return {}; }
+  /// Whether (u, v) lies in the kept region (always, without trim loops).
+  [[nodiscard]] virtual bool contains(double /*u*/, double /*v*/) const { return true; }
+
   /// Unit normal and principal curvatures from the jet (eigenvalues of I^-1 II).
   /// At a pole the limit is taken by evaluating slightly inside the domain.
   [[nodiscard]] SurfacePoint point_at(double u, double v) const;
@@ -90,7 +98,8 @@ struct SampleOptions {
 };
 
 /// Draw points uniformly by surface area (rejection sampling on the exact area element
-/// |S_u x S_v|), deterministic for a seed. @throws InvalidOptions on count 0 or negative noise.
+/// |S_u x S_v|, over the kept region of a trimmed surface), deterministic for a seed.
+/// @throws InvalidOptions on count 0 or negative noise.
 PointSet sample_surface(const Surface& surface, const SampleOptions& options = {});
 
 /// Options of tessellate.
@@ -100,18 +109,21 @@ struct TessellationOptions {
 };
 
 /// An exact, fine tessellation (ground truth): a grid in parameter space with glued edges
-/// welded and poles collapsed, so the mesh has the surface's topology. Triangles are
-/// consistently oriented when the surface is orientable.
+/// welded and poles collapsed, so the mesh has the surface's topology (a trimmed surface: the
+/// grid's nodes in the kept region and its trim loops, constrained-Delaunay triangulated in
+/// the parameter plane). Triangles are consistently oriented when the surface is orientable.
 TriangleMesh tessellate(const Surface& surface, const TessellationOptions& options = {});
 
 /// The boundary loops of the surface, each sampled so that consecutive vertices are at most
-/// `max_spacing` apart (arc length). Glued edges are joined (the Moebius strip has one loop).
+/// `max_spacing` apart (arc length). Glued edges are joined (the Moebius strip has one loop);
+/// a trimmed surface's loops are its trim loops.
 std::vector<BoundaryCurve> boundary_curves(const Surface& surface, double max_spacing);
 
 /// Bounding-box diagonal of the surface (from a fine parameter grid).
 double bbox_diagonal(const Surface& surface);
 
-/// Total area (numerical quadrature of |S_u x S_v|, relative error < 1e-6).
+/// Total area (numerical quadrature of |S_u x S_v|, relative error < 1e-6; over the kept region of a
+/// trimmed surface, where the quadrature nodes inside count, much coarser).
 double area(const Surface& surface);
 
 }  // namespace envcrust::surfaces

@@ -1,12 +1,13 @@
 // Reading one NURBS patch from an IGES file: a rational B-spline surface (entity 128), alone
-// or under a trimmed surface (entity 144) whose trimming is the patch's own border, placed by
-// its transformation matrices (entity 124).
+// or under a trimmed surface (entity 144) with its trimming loops, placed by its
+// transformation matrices (entity 124).
 #include "io_detail.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 
 namespace envcrust::io::detail {
@@ -21,6 +22,7 @@ constexpr int kCurveOnSurface = 142;
 constexpr int kComposite = 102;      // composite curve
 constexpr int kLine = 110;
 constexpr int kSplineCurve = 126;    // rational B-spline curve
+constexpr int kArc = 100;            // circular arc
 constexpr std::size_t kDataColumns = 72;
 constexpr std::size_t kParameterColumns = 64;
 /// A parameter-plane point within this fraction of the domain's size lies on its border.
@@ -206,11 +208,24 @@ surfaces::NurbsPatch read_surface(const IgesFile& file, const DirectoryEntry& e)
   return p;
 }
 
-/// The parameter-plane points that span a trimming curve, piece by piece (each piece lies in
-/// the convex hull of its points): a line's ends, a B-spline curve's control points, a
-/// composite curve's pieces.
-void collect_pieces(const IgesFile& file, std::size_t pointer, std::vector<std::vector<std::array<double, 2>>>& pieces,
-                    int depth = 0) {
+/// A polyline of the parameter plane as a degree-1 trimming curve.
+surfaces::TrimCurve polyline_curve(std::vector<std::array<double, 2>> points) {
+  surfaces::TrimCurve c;
+  c.degree = 1;
+  c.knots.push_back(0);
+  for (std::size_t k = 0; k < points.size(); ++k) c.knots.push_back(static_cast<double>(k));
+  c.knots.push_back(static_cast<double>(points.size() - 1));
+  c.weights.assign(points.size(), 1.0);
+  c.points = std::move(points);
+  return c;
+}
+
+/// Points per full turn of a circular arc (entity 100) turned into a polyline.
+constexpr int kArcPointsPerTurn = 1024;
+
+/// The parameter-plane curves of a trimming curve, in order: a line (110), a circular arc
+/// (100, as a fine polyline), a B-spline curve (126), the pieces of a composite curve (102).
+void collect_curves(const IgesFile& file, std::size_t pointer, std::vector<surfaces::TrimCurve>& curves, int depth = 0) {
   const DirectoryEntry& e = file.entry(pointer, "trimming curve");
   const auto v = file.parameters(e);
   const auto short_of = [&](std::size_t count) {
@@ -218,45 +233,63 @@ void collect_pieces(const IgesFile& file, std::size_t pointer, std::vector<std::
   };
   if (e.type == kLine) {
     short_of(6);
-    pieces.push_back({{v[0], v[1]}, {v[3], v[4]}});
+    curves.push_back(polyline_curve({{v[0], v[1]}, {v[3], v[4]}}));
+  } else if (e.type == kArc) {
+    short_of(7);  // ZT, centre, start, end; counterclockwise from start to end
+    const double cu = v[1], cv = v[2];
+    const double radius = std::hypot(v[3] - cu, v[4] - cv);
+    const double a0 = std::atan2(v[4] - cv, v[3] - cu);
+    double a1 = std::atan2(v[6] - cv, v[5] - cu);
+    if (a1 <= a0 + 1e-12) a1 += 2 * std::numbers::pi;
+    const int steps = std::max(8, static_cast<int>(std::ceil(kArcPointsPerTurn * (a1 - a0) / (2 * std::numbers::pi))));
+    std::vector<std::array<double, 2>> points;
+    for (int k = 0; k <= steps; ++k) {
+      const double a = a0 + (a1 - a0) * k / steps;
+      points.push_back({cu + radius * std::cos(a), cv + radius * std::sin(a)});
+    }
+    curves.push_back(polyline_curve(std::move(points)));
   } else if (e.type == kSplineCurve) {
     short_of(6);
-    const auto k = static_cast<std::size_t>(std::max(0.0, v[0])), m = static_cast<std::size_t>(std::max(0.0, v[1]));
-    const std::size_t first_point = 6 + (k + m + 2) + (k + 1);
+    if (v[0] < 0 || v[1] < 1 || v[0] > 1e6 || v[1] > 64) file.fail(describe(e) + ": K or M out of range");
+    const auto k = static_cast<std::size_t>(v[0]), m = static_cast<std::size_t>(v[1]);
+    const std::size_t first_weight = 6 + (k + m + 2), first_point = first_weight + (k + 1);
     short_of(first_point + 3 * (k + 1));
-    std::vector<std::array<double, 2>> points;
-    for (std::size_t i = 0; i <= k; ++i) points.push_back({v[first_point + 3 * i], v[first_point + 3 * i + 1]});
-    pieces.push_back(std::move(points));
+    surfaces::TrimCurve c;
+    c.degree = static_cast<int>(m);
+    c.knots.assign(v.begin() + 6, v.begin() + static_cast<std::ptrdiff_t>(first_weight));
+    c.weights.assign(v.begin() + static_cast<std::ptrdiff_t>(first_weight), v.begin() + static_cast<std::ptrdiff_t>(first_point));
+    for (std::size_t i = 0; i <= k; ++i) c.points.push_back({v[first_point + 3 * i], v[first_point + 3 * i + 1]});
+    curves.push_back(std::move(c));
   } else if (e.type == kComposite && depth < 8) {
     short_of(1);
     const auto n = static_cast<std::size_t>(std::max(0.0, v[0]));
     short_of(1 + n);
-    for (std::size_t i = 0; i < n; ++i) collect_pieces(file, static_cast<std::size_t>(v[1 + i]), pieces, depth + 1);
+    for (std::size_t i = 0; i < n; ++i) collect_curves(file, static_cast<std::size_t>(v[1 + i]), curves, depth + 1);
   } else {
     file.fail("a trimming curve of IGES entity " + std::to_string(e.type) +
-              " (lines 110, B-spline curves 126 and composite curves 102 are read)");
+              " (lines 110, circular arcs 100, B-spline curves 126 and composite curves 102 are read)");
   }
 }
 
-/// Whether a trimming curve runs along the whole border of the domain [u0,u1] x [v0,v1]: every
-/// piece lies on one side of it, and the pieces together are as long as its perimeter.
-bool is_domain_border(const std::vector<std::vector<std::array<double, 2>>>& pieces, const std::array<double, 4>& r) {
+/// Whether a trimming loop runs along the whole border of the domain [u0,u1] x [v0,v1]: every
+/// curve's control points lie on one side of it (so the curve does), and the curves together
+/// are as long as its perimeter.
+bool is_domain_border(const std::vector<surfaces::TrimCurve>& curves, const std::array<double, 4>& r) {
   const double du = r[1] - r[0], dv = r[3] - r[2];
   const double tol = kBorderTolerance * std::max(du, dv);
   double covered = 0;
-  for (const auto& piece : pieces) {
+  for (const auto& curve : curves) {
     bool on_side = false;
     for (int side = 0; side < 4 && !on_side; ++side) {
-      const int coordinate = side < 2 ? 0 : 1;  // sides u = u0, u = u1, v = v0, v = v1
+      const auto coordinate = static_cast<std::size_t>(side < 2 ? 0 : 1);  // sides u = u0, u = u1, v = v0, v = v1
       const double value = r[static_cast<std::size_t>(side)];
-      on_side = std::all_of(piece.begin(), piece.end(), [&](const auto& p) {
-        return std::abs(p[static_cast<std::size_t>(coordinate)] - value) <= tol;
-      });
+      on_side = std::all_of(curve.points.begin(), curve.points.end(),
+                            [&](const auto& p) { return std::abs(p[coordinate] - value) <= tol; });
       if (on_side) {
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (const auto& p : piece) {
-          lo = std::min(lo, p[static_cast<std::size_t>(1 - coordinate)]);
-          hi = std::max(hi, p[static_cast<std::size_t>(1 - coordinate)]);
+        for (const auto& p : curve.points) {
+          lo = std::min(lo, p[1 - coordinate]);
+          hi = std::max(hi, p[1 - coordinate]);
         }
         covered += hi - lo;
       }
@@ -266,53 +299,67 @@ bool is_domain_border(const std::vector<std::vector<std::array<double, 2>>>& pie
   return covered >= 2 * (du + dv) - 4 * tol;
 }
 
-/// The base surface of a trimmed surface (entity 144) whose trimming is its domain's border.
-/// @throws IoError when it trims anything away.
-const DirectoryEntry& untrimmed_base(const IgesFile& file, const DirectoryEntry& trimmed) {
+/// The parameter-plane loop of a curve on surface (142).
+std::vector<surfaces::TrimCurve> trim_loop(const IgesFile& file, std::size_t pointer, const char* what) {
+  const DirectoryEntry& e = file.entry(pointer, what);
+  const auto c = file.parameters(e);
+  if (e.type != kCurveOnSurface || c.size() < 3)
+    file.fail(std::string("the ") + what + " is " + describe(e) + ", not a curve on surface (142)");
+  if (c[2] == 0)
+    file.fail(std::string("the ") + what + " (" + describe(e) +
+              ") is given in space only, with no parameter-plane curve: not supported");
+  std::vector<surfaces::TrimCurve> curves;
+  collect_curves(file, static_cast<std::size_t>(c[2]), curves);
+  return curves;
+}
+
+/// The patch of a trimmed surface (entity 144): its base surface (128) with the trimming loops,
+/// none when the outer boundary is the domain's border (N1 = 0, or a curve along all of it)
+/// and there are no holes.
+surfaces::NurbsPatch trimmed_patch(const IgesFile& file, const DirectoryEntry& trimmed, std::size_t& base_line) {
   const auto v = file.parameters(trimmed);
   if (v.size() < 3) file.fail(describe(trimmed) + ": fewer than 3 parameters");
   const DirectoryEntry& base = file.entry(static_cast<std::size_t>(v[0]), "trimmed surface's base surface");
   if (base.type != kSurface)
     file.fail("a trimmed surface (IGES entity 144) over IGES entity " + std::to_string(base.type) +
               ": envcrust reads rational B-spline surfaces (entity 128)");
-  const std::string refusal = "a trimmed surface (IGES entity 144) whose trimming curves cut into its B-spline "
-                              "surface: trimming is not supported; envcrust reads one untrimmed rational B-spline "
-                              "surface (entity 128, or 144 trimmed along its own border)";
-  if (v[2] > 0) file.fail(refusal + " (it has " + std::to_string(static_cast<long>(v[2])) + " inner boundaries)");
-  if (v[1] == 0) return base;  // N1 = 0: the outer boundary is the domain's border
-  if (v.size() < 4) file.fail(describe(trimmed) + ": no outer boundary curve");
-  const DirectoryEntry& outer = file.entry(static_cast<std::size_t>(v[3]), "outer boundary");
-  const auto c = file.parameters(outer);
-  if (outer.type != kCurveOnSurface || c.size() < 3)
-    file.fail(describe(trimmed) + ": its outer boundary is " + describe(outer) + ", not a curve on surface (142)");
-  if (c[2] == 0) file.fail(refusal + " (its outer boundary is given in space only, with no parameter-plane curve)");
-  std::vector<std::vector<std::array<double, 2>>> pieces;
-  collect_pieces(file, static_cast<std::size_t>(c[2]), pieces);
-  const surfaces::NurbsPatch patch = read_surface(file, base);
-  if (!is_domain_border(pieces, *patch.parameter_range)) file.fail(refusal);
-  return base;
+  base_line = base.line;
+  surfaces::NurbsPatch patch = read_surface(file, base);
+  const auto holes = static_cast<std::size_t>(std::max(0.0, v[2]));
+  if (v.size() < 4 + holes) file.fail(describe(trimmed) + ": fewer boundary curves than it counts");
+  std::vector<surfaces::TrimCurve> outer;
+  if (v[1] != 0) outer = trim_loop(file, static_cast<std::size_t>(v[3]), "outer boundary");
+  if (!outer.empty() && !is_domain_border(outer, *patch.parameter_range)) patch.trim_loops.push_back(std::move(outer));
+  if (holes == 0 && patch.trim_loops.empty()) return patch;  // trimmed along its own border
+  if (patch.trim_loops.empty()) {  // holes in the whole domain: its border is the outer loop
+    const auto& r = *patch.parameter_range;
+    patch.trim_loops.push_back({polyline_curve({{r[0], r[2]}, {r[1], r[2]}, {r[1], r[3]}, {r[0], r[3]}, {r[0], r[2]}})});
+  }
+  for (std::size_t h = 0; h < holes; ++h)
+    patch.trim_loops.push_back(trim_loop(file, static_cast<std::size_t>(v[4 + h]), "inner boundary"));
+  return patch;
 }
 
 }  // namespace
 
 surfaces::NurbsPatch read_iges_patch(const std::filesystem::path& path) {
   const IgesFile file(path);
-  std::vector<const DirectoryEntry*> found;  // entities 144 (their base) and 128 no 144 uses
+  std::vector<surfaces::NurbsPatch> found;  // entities 144 (their base, trimmed), and 128 no 144 uses
   std::set<std::size_t> bases;
   std::map<int, std::size_t> types;
   for (const auto& e : file.entries()) {
     ++types[e.type];
     if (e.type == kBounded)
-      file.fail("a bounded surface (IGES entity 143): trimming curves are not supported; envcrust reads one untrimmed "
-                "rational B-spline surface (entity 128)");
+      file.fail("a bounded surface (IGES entity 143): not supported; envcrust reads one rational B-spline surface "
+                "(entity 128), trimmed or not (144)");
     if (e.type == kTrimmed) {
-      const DirectoryEntry& base = untrimmed_base(file, e);
-      bases.insert(base.line);
-      found.push_back(&base);
+      std::size_t base_line = 0;
+      found.push_back(trimmed_patch(file, e, base_line));
+      bases.insert(base_line);
     }
   }
   for (const auto& e : file.entries())
-    if (e.type == kSurface && !bases.contains(e.line)) found.push_back(&e);
+    if (e.type == kSurface && !bases.contains(e.line)) found.push_back(read_surface(file, e));
   if (found.empty()) {
     std::string list;
     for (const auto& [type, count] : types) list += (list.empty() ? "" : ", ") + std::to_string(type);
@@ -322,7 +369,7 @@ surfaces::NurbsPatch read_iges_patch(const std::filesystem::path& path) {
     file.fail(std::to_string(found.size()) +
               " rational B-spline surfaces (IGES entity 128): envcrust reads one patch per file (sample them into a "
               "point file or mesh them to reconstruct the whole)");
-  return read_surface(file, *found.front());
+  return std::move(found.front());
 }
 
 }  // namespace envcrust::io::detail

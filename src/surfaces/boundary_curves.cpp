@@ -66,16 +66,11 @@ std::vector<Loop> trace_loops(const ParameterDomain& d, bool& has_corners) {
   return loops;
 }
 
-struct Frame {
-  Point3 position;
-  Vector3 tangent, normal, conormal;
-};
-
-Frame frame_at(const Surface& surface, const Segment& s, double t) {
+BoundaryFrame frame_at(const Surface& surface, const Segment& s, double t) {
   const double u = s.u_start + t * (s.u_end - s.u_start);
   const double v = s.v_start + t * (s.v_end - s.v_start);
   const SurfaceJet jet = surface.evaluate(u, v);
-  Frame f;
+  BoundaryFrame f;
   f.position = jet.position;
   f.tangent = normalized((s.u_end - s.u_start) * jet.du + (s.v_end - s.v_start) * jet.dv);
   f.normal = unit_normal_at(surface, u, v);
@@ -147,6 +142,7 @@ std::vector<BoundaryCurve> boundary_curves(const Surface& surface, double max_sp
   if (!(max_spacing > 0) || !std::isfinite(max_spacing)) {
     throw InvalidOptions("boundary spacing must be > 0 (got " + format_value(max_spacing) + ")");
   }
+  if (!surface.trim_loops().empty()) return trim_boundary_curves(surface, max_spacing);
   bool has_corners = false;
   const std::vector<Loop> loops = trace_loops(surface.domain(), has_corners);
   std::vector<BoundaryCurve> curves;
@@ -157,17 +153,13 @@ std::vector<BoundaryCurve> boundary_curves(const Surface& surface, double max_sp
       const Segment& segment = loop[k];
       const std::vector<double> params = arc_length_parameters(surface, segment, max_spacing);
       for (std::size_t q = 0; q < params.size(); ++q) {
-        const Frame f = frame_at(surface, segment, params[q]);
-        BoundaryVertex vertex{f.position, f.tangent, f.normal, f.conormal, false, Vector3(0, 0, 0)};
+        const BoundaryFrame f = frame_at(surface, segment, params[q]);
         if (has_corners && q == 0 && loop.size() > 1) {
-          // Tangent and conormal of the edge arriving here, so that they stay orthogonal.
-          const Frame incoming = frame_at(surface, loop[(k + loop.size() - 1) % loop.size()], 1.0);
-          vertex.tangent = incoming.tangent;
-          vertex.conormal = incoming.conormal;
-          vertex.is_corner = true;
-          vertex.conormal_next = f.conormal;
+          const BoundaryFrame incoming = frame_at(surface, loop[(k + loop.size() - 1) % loop.size()], 1.0);
+          curve.vertices.push_back(boundary_vertex(f, &incoming));
+        } else {
+          curve.vertices.push_back(boundary_vertex(f));
         }
-        curve.vertices.push_back(vertex);
       }
     }
     curves.push_back(std::move(curve));

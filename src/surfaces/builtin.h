@@ -35,4 +35,24 @@ inline double away_from_pole(const ParameterDomain& domain, double v) {
 /// Unit normal S_u x S_v / |.| at (u, v), taken just inside the domain at a pole.
 Vector3 unit_normal_at(const Surface& surface, double u, double v);
 
+/// Where a boundary curve passes: position, unit tangent, normal and outward conormal.
+struct BoundaryFrame {
+  Point3 position;
+  Vector3 tangent, normal, conormal;
+};
+
+/// The boundary vertex at `here`; at a corner (`incoming`: the frame of the piece arriving)
+/// it takes that piece's tangent and conormal, so that they stay orthogonal, and keeps its
+/// own conormal as conormal_next.
+inline BoundaryVertex boundary_vertex(const BoundaryFrame& here, const BoundaryFrame* incoming = nullptr) {
+  if (incoming == nullptr) return {here.position, here.tangent, here.normal, here.conormal, false, Vector3(0, 0, 0)};
+  return {here.position, incoming->tangent, here.normal, incoming->conormal, true, here.conormal};
+}
+
+/// boundary_curves of a trimmed surface: its trim loops mapped onto it (trim_boundary.cpp).
+std::vector<BoundaryCurve> trim_boundary_curves(const Surface& surface, double max_spacing);
+
+/// tessellate of a trimmed surface on an nu x nv parameter grid (trim_tessellation.cpp).
+TriangleMesh tessellate_trimmed(const Surface& surface, int nu, int nv);
+
 }  // namespace envcrust::surfaces

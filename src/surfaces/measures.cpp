@@ -30,18 +30,22 @@ double bbox_diagonal(const Surface& surface) {
   const ParameterDomain d = surface.domain();
   constexpr double inf = std::numeric_limits<double>::infinity();
   std::array<double, 3> lo{inf, inf, inf}, hi{-inf, -inf, -inf};
+  const auto grow = [&](const Point3& p) {
+    for (int k = 0; k < 3; ++k) {
+      const auto uk = static_cast<std::size_t>(k);
+      lo[uk] = std::min(lo[uk], p[k]);
+      hi[uk] = std::max(hi[uk], p[k]);
+    }
+  };
   for (int i = 0; i <= bbox_grid; ++i) {
     const double u = d.u0 + (d.u1 - d.u0) * i / bbox_grid;
     for (int j = 0; j <= bbox_grid; ++j) {
       const double v = d.v0 + (d.v1 - d.v0) * j / bbox_grid;
-      const Point3 p = surface.evaluate(u, v).position;
-      for (int k = 0; k < 3; ++k) {
-        const auto uk = static_cast<std::size_t>(k);
-        lo[uk] = std::min(lo[uk], p[k]);
-        hi[uk] = std::max(hi[uk], p[k]);
-      }
+      if (surface.contains(u, v)) grow(surface.evaluate(u, v).position);
     }
   }
+  for (const auto& loop : surface.trim_loops())
+    for (const auto& [u, v] : loop) grow(surface.evaluate(u, v).position);
   return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
@@ -59,7 +63,7 @@ double area(const Surface& surface) {
         for (std::size_t b = 0; b < gauss_nodes.size(); ++b) {
           const double v = d.v0 + hv * (pv + 0.5 * (gauss_nodes[b] + 1));
           const SurfaceJet jet = surface.evaluate(u, v);
-          column += gauss_weights[b] * norm(cross(jet.du, jet.dv));
+          if (surface.contains(u, v)) column += gauss_weights[b] * norm(cross(jet.du, jet.dv));
         }
       }
       total += gauss_weights[a] * column;

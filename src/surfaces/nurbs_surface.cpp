@@ -4,6 +4,8 @@
 
 #include "builtin.h"
 #include "bspline_basis.h"
+#include "nurbs_curve.h"
+#include "trim_region.h"
 #include "vector_ops.h"
 
 #include "envcrust/errors.h"
@@ -206,6 +208,74 @@ EdgeFacts find_edges(const RawPatch& raw, double tolerance) {
   return f;
 }
 
+/// Points per trimming curve: fine enough that the polyline's chord error is far below the
+/// reconstruction's resolution (a quarter circle's: 2e-6 of its radius).
+constexpr int kTrimCurvePoints = 512;
+
+/// The trimming loops as closed parameter-plane polylines: each curve evaluated at
+/// kTrimCurvePoints, turned to continue from the previous one's end, the chain checked to
+/// close up within the domain and to bound an area.
+std::vector<std::vector<Uv>> trim_polylines(const std::vector<std::vector<TrimCurve>>& loops,
+                                            const std::array<double, 4>& range) {
+  const double size = std::max(range[1] - range[0], range[3] - range[2]);
+  const double gap = 1e-5 * size;
+  std::vector<std::vector<Uv>> out;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const std::string which = "trim loop " + std::to_string(l);
+    std::vector<Uv> polyline;
+    for (std::size_t c = 0; c < loops[l].size(); ++c) {
+      const TrimCurve& t = loops[l][c];
+      std::vector<Eigen::Vector3d> points;
+      for (const auto& [u, v] : t.points) points.emplace_back(u, v, 0.0);
+      std::vector<Uv> curve;
+      try {
+        const RationalBSplineCurve spline(t.degree, points, t.weights, t.knots);
+        const double a = spline.first_parameter(), b = spline.last_parameter();
+        if (!(a < b)) throw InvalidInput("its knots leave an empty parameter range");
+        const int steps = t.degree == 1 && t.points.size() == 2 ? 1 : kTrimCurvePoints;
+        for (int k = 0; k <= steps; ++k) {
+          const Eigen::Vector3d p = spline.evaluate(a + (b - a) * k / steps).position;
+          curve.push_back({p.x(), p.y()});
+        }
+      } catch (const InvalidInput& e) {
+        throw InvalidInput("NURBS surface: " + which + ", curve " + std::to_string(c) + ": " + e.what());
+      }
+      const auto distance = [](const Uv& p, const Uv& q) { return std::hypot(p[0] - q[0], p[1] - q[1]); };
+      if (!polyline.empty()) {
+        if (distance(polyline.back(), curve.back()) < distance(polyline.back(), curve.front()))
+          std::reverse(curve.begin(), curve.end());
+        if (distance(polyline.back(), curve.front()) > gap)
+          throw InvalidInput("NURBS surface: " + which + " breaks between curves " + std::to_string(c - 1) + " and " +
+                             std::to_string(c) + " (a gap of " + number(distance(polyline.back(), curve.front())) + ")");
+        polyline.pop_back();  // the joint once
+      } else if (loops[l].size() > 1) {
+        // The first curve runs towards the second: turn it if its start is nearer to it.
+        const auto& next = loops[l][1].points;
+        const double to_start = std::min(distance(curve.front(), next.front()), distance(curve.front(), next.back()));
+        const double to_end = std::min(distance(curve.back(), next.front()), distance(curve.back(), next.back()));
+        if (to_start < to_end) std::reverse(curve.begin(), curve.end());
+      }
+      polyline.insert(polyline.end(), curve.begin(), curve.end());
+    }
+    if (polyline.size() < 4 || std::hypot(polyline.back()[0] - polyline.front()[0], polyline.back()[1] - polyline.front()[1]) > gap)
+      throw InvalidInput("NURBS surface: " + which + " does not close up");
+    polyline.pop_back();
+    double area = 0;
+    for (std::size_t k = 0; k < polyline.size(); ++k) {
+      const Uv& p = polyline[k];
+      const Uv& q = polyline[(k + 1) % polyline.size()];
+      area += p[0] * q[1] - q[0] * p[1];
+      if (p[0] < range[0] - gap || p[0] > range[1] + gap || p[1] < range[2] - gap || p[1] > range[3] + gap)
+        throw InvalidInput("NURBS surface: " + which + " leaves the parameter domain at (" + number(p[0]) + ", " +
+                           number(p[1]) + ")");
+    }
+    if (!(std::abs(area) / 2 > 1e-10 * size * size)) throw InvalidInput("NURBS surface: " + which + " bounds no area");
+    for (auto& p : polyline) p = {std::clamp(p[0], range[0], range[1]), std::clamp(p[1], range[2], range[3])};
+    out.push_back(std::move(polyline));
+  }
+  return out;
+}
+
 class NurbsSurface final : public Surface {
  public:
   NurbsSurface(NurbsPatch patch, std::string name) : raw_(std::move(patch)), name_(std::move(name)) {
@@ -233,8 +303,17 @@ class NurbsSurface final : public Surface {
       throw InvalidInput("NURBS surface: an edge collapses to a point on a strip glued with a flip (a degenerate patch)");
     if (poles && domain_.v_gluing != Gluing::None)
       throw InvalidInput("NURBS surface: an edge collapses to a point although the patch closes up across it (a degenerate patch)");
+    if (!raw_.patch().trim_loops.empty()) {
+      if (poles || domain_.u_gluing != Gluing::None || domain_.v_gluing != Gluing::None)
+        throw InvalidInput("NURBS surface: trimming a patch that closes up (a seam or an edge collapsed to a point) "
+                           "is not supported");
+      trim_ = TrimRegion(trim_polylines(raw_.patch().trim_loops, raw_.range()));
+    }
     check_regular();
   }
+
+  [[nodiscard]] std::vector<std::vector<std::array<double, 2>>> trim_loops() const override { return trim_.loops(); }
+  [[nodiscard]] bool contains(double u, double v) const override { return trim_.contains(u, v); }
 
   [[nodiscard]] std::string name() const override { return name_; }
   [[nodiscard]] std::string description() const override {
@@ -253,6 +332,8 @@ class NurbsSurface final : public Surface {
     text += gluing(domain_.u_gluing, first) + gluing(domain_.v_gluing, second);
     const int poles = int(domain_.v0_is_pole) + int(domain_.v1_is_pole);
     if (poles > 0) text += ", " + std::to_string(poles) + (poles == 1 ? " edge collapsed" : " edges collapsed") + " to a point";
+    const std::size_t loops = trim_.loops().size();
+    if (loops > 0) text += ", trimmed by " + std::to_string(loops) + (loops == 1 ? " loop" : " loops");
     return text;
   }
   [[nodiscard]] ParameterDomain domain() const override { return domain_; }
@@ -265,7 +346,17 @@ class NurbsSurface final : public Surface {
     ExpectedTopology t;
     const int poles = int(domain_.v0_is_pole) + int(domain_.v1_is_pole);
     t.is_orientable = domain_.u_gluing != Gluing::PeriodicFlipped;
-    if (domain_.u_gluing == Gluing::None && domain_.v_gluing == Gluing::None) {
+    if (!trim_.empty()) {
+      // Each loop inside an even number of others bounds a piece (a disc, +1), each one inside
+      // an odd number a hole in it (-1).
+      const auto& loops = trim_.loops();
+      for (std::size_t a = 0; a < loops.size(); ++a) {
+        int depth = 0;
+        for (std::size_t b = 0; b < loops.size(); ++b)
+          if (b != a && is_inside_loop(loops[b], loops[a][0][0], loops[a][0][1])) ++depth;
+        t.euler_characteristic += depth % 2 == 0 ? 1 : -1;
+      }
+    } else if (domain_.u_gluing == Gluing::None && domain_.v_gluing == Gluing::None) {
       t.euler_characteristic = 1;  // a disc, whatever collapses
     } else if (domain_.u_gluing != Gluing::None && domain_.v_gluing != Gluing::None) {
       t.euler_characteristic = 0;  // a torus
@@ -317,14 +408,19 @@ class NurbsSurface final : public Surface {
       return "(u, v) = (" + number(u) + ", " + number(v) + ")";
     };
     const double fold_cos = std::cos(kFoldDegrees * std::numbers::pi / 180);
+    const auto kept = [&](int i, int j) {
+      const auto [u, v] = cell(i, j);
+      return contains(u, v);
+    };
     for (int j = 0; j < kRegularityGrid; ++j) {
       for (int i = 0; i < kRegularityGrid; ++i) {
         const Vector3& n = normals[static_cast<std::size_t>(i + kRegularityGrid * j)];
+        if (!kept(i, j)) continue;
         if (!(norm(n) > 1e-12 * largest))
           throw InvalidInput("NURBS surface: S_u x S_v vanishes inside the patch at " + where(i, j) +
                              ": its normal is undefined there");
         for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
-          if (i + di >= kRegularityGrid || j + dj >= kRegularityGrid) continue;
+          if (i + di >= kRegularityGrid || j + dj >= kRegularityGrid || !kept(i + di, j + dj)) continue;
           const Vector3& m = normals[static_cast<std::size_t>(i + di + kRegularityGrid * (j + dj))];
           if (dot(normalized(n), normalized(m)) < fold_cos)
             throw InvalidInput("NURBS surface: the patch folds back on itself between " + where(i, j) + " and " +
@@ -336,6 +432,7 @@ class NurbsSurface final : public Surface {
   }
 
   RawPatch raw_;
+  TrimRegion trim_;
   std::string name_;
   double tolerance_ = 0;
   bool swapped_ = false;

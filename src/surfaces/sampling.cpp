@@ -97,7 +97,12 @@ PointSet sample_surface(const Surface& surface, const SampleOptions& options) {
     result.normals.clear();
     result.points.reserve(options.count);
     if (options.with_normals) result.normals.reserve(options.count);
-    while (result.points.size() < options.count) {
+    // A trimmed surface keeps part of its domain: a kept region too small to fill the count
+    // in this many draws is refused rather than searched forever.
+    const std::size_t max_draws = 10000 * options.count + 1000000;
+    for (std::size_t draws = 0; result.points.size() < options.count; ++draws) {
+      if (draws == max_draws)
+        throw DegenerateInput("surface '" + surface.name() + "': its trimmed region has almost no area to sample");
       const double u = d.u0 + (d.u1 - d.u0) * random.uniform();
       const double v = d.v0 + (d.v1 - d.v0) * random.uniform();
       const SurfaceJet jet = surface.evaluate(u, v);
@@ -108,6 +113,7 @@ PointSet sample_surface(const Surface& surface, const SampleOptions& options) {
         break;
       }
       if (random.uniform() * bound >= element) continue;
+      if (!surface.contains(u, v)) continue;
       result.points.push_back(jet.position);
       if (options.with_normals) {
         const Vector3 n = normalized(cross(jet.du, jet.dv));

@@ -183,6 +183,8 @@ TriangleMesh tessellate(const Surface& surface, const TessellationOptions& optio
     if (options.nv) r.nv = *options.nv;
   }
 
+  if (!surface.trim_loops().empty()) return tessellate_trimmed(surface, r.nu, r.nv);
+
   // Welding: every grid node gets the id of its canonical node. Canonical nodes come first in
   // (i, j) order, so a glued node's canonical id already exists when it is reached.
   const auto columns = static_cast<std::size_t>(r.nv + 1);

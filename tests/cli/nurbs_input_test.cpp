@@ -81,13 +81,23 @@ TEST_F(NurbsInput, the_shipped_trefoil_ribbon_example_has_two_linked_trefoil_edg
   EXPECT_EQ(std::abs(a["linking"][0]["linking_number"].get<int>()), 3);
 }
 
+TEST_F(NurbsInput, a_trimmed_iges_square_with_a_round_hole_comes_out_with_two_loops) {
+  const std::string file = write("holed.igs", iges_trimmed_text(square_patch(), {}, {{iges_circle(0.5, 0.5, 0.25)}}));
+  const auto s = run_envcrust_json("sample " + file + " --mesh -o " + path("truth.ply") + " --json");
+  EXPECT_EQ(s["expected"]["euler_characteristic"], 0);
+  EXPECT_EQ(s["expected"]["boundary_loops"], 2);
+  const auto j = run_envcrust_json("reconstruct " + file + " -n 5000 -o " + path("h.ply") + " --json");
+  expect_result(j["analysis"], 0, 2, true);
+  ASSERT_EQ(j["analysis"]["boundary_matches"].size(), 2u);
+  for (const auto& b : j["analysis"]["boundary_matches"]) EXPECT_LT(b["hausdorff_rel_diag"].get<double>(), 0.01) << b;
+}
+
 TEST_F(NurbsInput, unreadable_and_degenerate_patches_are_refused_by_name) {
   write("trim.igs", iges_trimmed_text(cylinder_patch(), {iges_line(0, -1, 0.5, -1), iges_line(0.5, -1, 0.5, 1),
                                                           iges_line(0.5, 1, 0, 1), iges_line(0, 1, 0, -1)}));
   expect_reconstruct_refuses("trim.igs",
-                             "a trimmed surface (IGES entity 144) whose trimming curves cut into its B-spline surface: "
-                             "trimming is not supported; envcrust reads one untrimmed rational B-spline surface "
-                             "(entity 128, or 144 trimmed along its own border)");
+                             "NURBS surface: trimming a patch that closes up (a seam or an edge collapsed to a point) "
+                             "is not supported");
   auto patch = cylinder_patch();
   patch.knots_u[4] = 0.1;
   write("knots.json", geomdl_json(patch));

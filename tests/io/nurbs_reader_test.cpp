@@ -4,6 +4,7 @@
 #include "fixtures/nurbs_patches.h"
 #include "io_test_support.h"
 
+#include <cmath>
 #include <string>
 
 namespace envcrust::io {
@@ -88,26 +89,44 @@ TEST_F(NurbsReader, reads_an_iges_trimmed_surface_trimmed_along_its_own_border) 
   expect_same_patch(sphere, read_nurbs_patch(write("traced.igs", traced)));
 }
 
-TEST_F(NurbsReader, refuses_a_trimmed_surface_whose_trimming_cuts_into_it) {
-  const auto sphere = fixtures::sphere_patch();
-  const std::string refusal =
-      ": a trimmed surface (IGES entity 144) whose trimming curves cut into its B-spline surface: trimming is not "
-      "supported; envcrust reads one untrimmed rational B-spline surface (entity 128, or 144 trimmed along its own "
-      "border)";
-  // A smaller square inside the domain.
-  auto file = write("inner.igs", fixtures::iges_trimmed_text(
-                                     sphere, {fixtures::iges_line(0.1, 0.1, 0.9, 0.1), fixtures::iges_line(0.9, 0.1, 0.9, 0.9),
-                                              fixtures::iges_line(0.9, 0.9, 0.1, 0.9), fixtures::iges_line(0.1, 0.9, 0.1, 0.1)}));
-  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + refusal);
-  // Three sides only: a quarter of the border is missing.
-  file = write("three.igs", fixtures::iges_trimmed_text(sphere, {fixtures::iges_line(0, 0, 1, 0), fixtures::iges_line(1, 0, 1, 1),
-                                                                  fixtures::iges_line(1, 1, 0, 1)}));
-  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + refusal);
-  // A hole (N2 = 1) is trimming too.
-  std::string holed = fixtures::iges_trimmed_text(sphere);
-  holed.replace(holed.find("144,1,0,0,0;"), 12, "144,1,0,1,0;");
-  file = write("holed.igs", holed);
-  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + refusal + " (it has 1 inner boundaries)");
+TEST_F(NurbsReader, reads_the_trimming_loops_of_an_iges_trimmed_surface) {
+  const auto square = fixtures::square_patch();
+  // An outer boundary inside the domain: one loop of four lines.
+  const auto inner = read_nurbs_patch(write(
+      "inner.igs", fixtures::iges_trimmed_text(square, {fixtures::iges_line(0.1, 0.1, 0.9, 0.1),
+                                                        fixtures::iges_line(0.9, 0.1, 0.9, 0.9),
+                                                        fixtures::iges_line(0.9, 0.9, 0.1, 0.9),
+                                                        fixtures::iges_line(0.1, 0.9, 0.1, 0.1)})));
+  ASSERT_EQ(inner.trim_loops.size(), 1u);
+  ASSERT_EQ(inner.trim_loops[0].size(), 4u);
+  EXPECT_EQ(inner.trim_loops[0][1].points, (std::vector<std::array<double, 2>>{{0.9, 0.1}, {0.9, 0.9}}));
+  // The domain's border (N1 = 0) and a circular hole (entity 100): the border becomes the
+  // outer loop, the circle a fine polyline around (0.5, 0.5).
+  const auto holed = read_nurbs_patch(
+      write("holed.igs", fixtures::iges_trimmed_text(square, {}, {{fixtures::iges_circle(0.5, 0.5, 0.25)}})));
+  ASSERT_EQ(holed.trim_loops.size(), 2u);
+  EXPECT_EQ(holed.trim_loops[0][0].points.size(), 5u);
+  ASSERT_EQ(holed.trim_loops[1].size(), 1u);
+  EXPECT_GE(holed.trim_loops[1][0].points.size(), 1024u);
+  for (const auto& [u, v] : holed.trim_loops[1][0].points) EXPECT_NEAR(std::hypot(u - 0.5, v - 0.5), 0.25, 1e-12);
+  const auto surface = surfaces::make_nurbs_surface(holed, "holed");
+  EXPECT_EQ(surface->expected_topology().euler_characteristic, 0);
+  EXPECT_EQ(surface->expected_topology().boundary_loops, 2);
+}
+
+TEST_F(NurbsReader, refuses_trimming_curves_it_cannot_place) {
+  const auto square = fixtures::square_patch();
+  auto text = fixtures::iges_trimmed_text(square, {fixtures::iges_line(0, 0, 1, 0)});
+  // The curve on surface without its parameter-plane curve (BPTR 0).
+  text.replace(text.find("142,1,1,7,0,1;"), 14, "142,1,1,0,0,1;");
+  auto file = write("space.igs", text);
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": the outer boundary (entity 142 (directory line 5)) is given in space only, with no "
+                            "parameter-plane curve: not supported");
+  file = write("conic.igs", fixtures::iges_trimmed_text(square, {fixtures::IgesEntity{104, {"1", "0", "1", "0", "0", "-1", "0", "1", "0", "1", "0"}, 0}}));
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": a trimming curve of IGES entity 104 (lines 110, circular arcs 100, B-spline curves 126 "
+                            "and composite curves 102 are read)");
 }
 
 TEST_F(NurbsReader, refuses_iges_files_it_cannot_read_whole) {

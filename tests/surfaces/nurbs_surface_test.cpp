@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace envcrust::surfaces {
@@ -168,6 +169,61 @@ TEST(NurbsSurface, a_band_whose_ruling_turns_half_round_is_glued_with_a_flip) {
     EXPECT_EQ(mesh.non_manifold_edges, 0u);
     EXPECT_NE(s->description().find("with a flip"), std::string::npos) << s->description();
   }
+}
+
+/// The unit square with a circular hole of radius 0.25 at its centre.
+NurbsPatch holed_square() {
+  NurbsPatch p = envcrust::testing::square_patch();
+  p.trim_loops = {{envcrust::testing::trim_polyline({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}})},
+                  {envcrust::testing::trim_circle(0.5, 0.5, 0.25)}};
+  return p;
+}
+
+TEST(NurbsSurface, a_trimmed_square_with_a_hole_is_an_annulus_sampled_outside_the_hole) {
+  const auto s = make_nurbs_surface(holed_square(), "holed");
+  EXPECT_NE(s->description().find("trimmed by 2 loops"), std::string::npos) << s->description();
+  const ExpectedTopology t = s->expected_topology();
+  EXPECT_EQ(t.euler_characteristic, 0);
+  EXPECT_EQ(t.boundary_loops, 2);
+  EXPECT_EQ(t.boundary_knots, (std::vector<std::string>{"unknot", "unknot"}));
+  const Point3 centre(0.5, 0.5, 0);
+  SampleOptions o;
+  o.count = 4000;
+  for (const Point3& p : sample_surface(*s, o).points) EXPECT_GE(std::sqrt(CGAL::squared_distance(p, centre)), 0.25 - 1e-9);
+  EXPECT_NEAR(area(*s), 1 - std::numbers::pi / 16, 2e-3);
+  // The hole's boundary: on the circle, conormals pointing into the hole (out of the surface).
+  const auto curves = boundary_curves(*s, 0.01);
+  ASSERT_EQ(curves.size(), 2u);
+  std::size_t corners = 0;
+  for (const auto& v : curves[0].vertices) corners += v.is_corner ? 1 : 0;
+  EXPECT_EQ(corners, 4u);  // the square's
+  for (const auto& v : curves[1].vertices) {
+    const Vector3 to_centre = centre - v.position;
+    EXPECT_NEAR(std::sqrt(to_centre.squared_length()), 0.25, 1e-5);
+    EXPECT_GT(v.conormal * to_centre / 0.25, 0.999);
+  }
+  const auto mesh = testing::mesh_topology(tessellate(*s));
+  EXPECT_EQ(mesh.euler_characteristic, 0);
+  EXPECT_EQ(mesh.boundary_loops, 2u);
+  EXPECT_EQ(mesh.non_manifold_edges, 0u);
+  EXPECT_EQ(mesh.degenerate_triangles, 0u);
+  EXPECT_TRUE(mesh.consistently_oriented);
+}
+
+TEST(NurbsSurface, bad_trim_loops_are_refused_with_the_reason) {
+  auto p = holed_square();
+  p.trim_loops[0][0].points[4] = {0, 0.1};  // the square no longer closes
+  EXPECT_EQ(refusal(p), "NURBS surface: trim loop 0 does not close up");
+  p = holed_square();
+  p.trim_loops[1][0] = envcrust::testing::trim_circle(0.9, 0.5, 0.25);
+  EXPECT_EQ(refusal(p).rfind("NURBS surface: trim loop 1 leaves the parameter domain at (", 0), 0u) << refusal(p);
+  p = holed_square();
+  p.trim_loops[0][0].knots[2] = -1;
+  EXPECT_EQ(refusal(p), "NURBS surface: trim loop 0, curve 0: NURBS curve: knots must be non-decreasing");
+  auto cylinder = cylinder_patch();
+  cylinder.trim_loops = holed_square().trim_loops;
+  EXPECT_EQ(refusal(cylinder),
+            "NURBS surface: trimming a patch that closes up (a seam or an edge collapsed to a point) is not supported");
 }
 
 TEST(NurbsSurface, malformed_patches_are_refused_with_the_reason) {
