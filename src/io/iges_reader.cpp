@@ -227,6 +227,8 @@ constexpr int kArcPointsPerTurn = 1024;
 /// (100, as a fine polyline), a B-spline curve (126), the pieces of a composite curve (102).
 void collect_curves(const IgesFile& file, std::size_t pointer, std::vector<surfaces::TrimCurve>& curves, int depth = 0) {
   const DirectoryEntry& e = file.entry(pointer, "trimming curve");
+  if (e.transform != 0 && e.type != kComposite)
+    file.fail("a trimming curve (" + describe(e) + ") placed by a transformation matrix: not supported");
   const auto v = file.parameters(e);
   const auto short_of = [&](std::size_t count) {
     if (v.size() < count) file.fail(describe(e) + ": fewer than " + std::to_string(count) + " parameters");

@@ -123,6 +123,12 @@ TEST_F(NurbsReader, refuses_trimming_curves_it_cannot_place) {
   EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
             file.string() + ": the outer boundary (entity 142 (directory line 5)) is given in space only, with no "
                             "parameter-plane curve: not supported");
+  auto placed = fixtures::iges_line(0.1, 0.1, 0.9, 0.1);
+  placed.transform = 1;  // any matrix: a trimming curve is read in the parameter plane as written
+  file = write("placed.igs", fixtures::iges_trimmed_text(square, {placed}));
+  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
+            file.string() + ": a trimming curve (entity 110 (directory line 9)) placed by a transformation matrix: "
+                            "not supported");
   file = write("conic.igs", fixtures::iges_trimmed_text(square, {fixtures::IgesEntity{104, {"1", "0", "1", "0", "0", "-1", "0", "1", "0", "1", "0"}, 0}}));
   EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
             file.string() + ": a trimming curve of IGES entity 104 (lines 110, circular arcs 100, B-spline curves 126 "
