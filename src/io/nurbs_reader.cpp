@@ -32,12 +32,17 @@ surfaces::NurbsPatch read_geomdl_json(const std::filesystem::path& path) {
       fail(path, std::to_string(data.size()) + " surfaces in shape.data: envcrust reads one patch per file");
     const auto& d = data.front();
     if (d.contains("trims") && !d.at("trims").at("data").empty())
-      fail(path, "a trimmed surface: trimming curves are not supported; envcrust reads one untrimmed NURBS surface");
+      fail(path, "a trimmed surface: NURBS-Python trim curves are not read (an IGES trimmed surface, entity 144, is)");
     surfaces::NurbsPatch p;
     p.degree_u = d.at("degree_u").get<int>();
     p.degree_v = d.at("degree_v").get<int>();
-    p.count_u = d.at("size_u").get<std::size_t>();
-    p.count_v = d.at("size_v").get<std::size_t>();
+    const auto count = [&](const char* key) {
+      const auto n = d.at(key).get<std::int64_t>();
+      if (n < 1 || n > 1000000) fail(path, std::string(key) + " is " + std::to_string(n) + ", not a count of 1 to 1000000");
+      return static_cast<std::size_t>(n);
+    };
+    p.count_u = count("size_u");
+    p.count_v = count("size_v");
     p.knots_u = d.at("knotvector_u").get<std::vector<double>>();
     p.knots_v = d.at("knotvector_v").get<std::vector<double>>();
     const auto points = d.at("control_points").at("points").get<std::vector<std::vector<double>>>();

@@ -181,7 +181,10 @@ TEST_F(NurbsReader, refuses_json_that_is_not_one_untrimmed_surface) {
       "control_points": {"points": [[0, 0, 0], [0, 1, 0], [1, 0, 0]]}}]}})",
                  "3 control points, size_u x size_v = 2 x 2 expected");
   expect_refusal("f.json", R"({"shape": {"type": "surface", "data": [{"trims": {"data": [{}]}}]}})",
-                 "a trimmed surface: trimming curves are not supported; envcrust reads one untrimmed NURBS surface");
+                 "a trimmed surface: NURBS-Python trim curves are not read (an IGES trimmed surface, entity 144, is)");
+  expect_refusal("h.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1, "degree_v": 1, "size_u": -2,
+      "size_v": 2, "knotvector_u": [0, 0, 1, 1], "knotvector_v": [0, 0, 1, 1], "control_points": {"points": []}}]}})",
+                 "size_u is -2, not a count of 1 to 1000000");
   const auto file = write("g.txt", "");
   EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
             file.string() + ": unknown extension '.txt' (expected .igs, .iges, .json)");
