@@ -279,9 +279,9 @@ std::vector<std::vector<Uv>> trim_polylines(const std::vector<std::vector<TrimCu
 class NurbsSurface final : public Surface {
  public:
   NurbsSurface(NurbsPatch patch, std::string name) : raw_(std::move(patch)), name_(std::move(name)) {
-    tolerance_ = kEdgeToleranceRelDiag * control_net_diagonal(raw_.patch());
-    if (!(tolerance_ > 0)) throw InvalidInput("NURBS surface: all control points coincide");
-    const EdgeFacts f = find_edges(raw_, tolerance_);
+    const double tolerance = kEdgeToleranceRelDiag * control_net_diagonal(raw_.patch());
+    if (!(tolerance > 0)) throw InvalidInput("NURBS surface: all control points coincide");
+    const EdgeFacts f = find_edges(raw_, tolerance);
     const bool u_poles = f.u0_pole || f.u1_pole;
     const bool v_poles = f.v0_pole || f.v1_pole;
     if (u_poles && v_poles)
@@ -434,7 +434,6 @@ class NurbsSurface final : public Surface {
   RawPatch raw_;
   TrimRegion trim_;
   std::string name_;
-  double tolerance_ = 0;
   bool swapped_ = false;
   ParameterDomain domain_;
 };
