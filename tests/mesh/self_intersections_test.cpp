@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 using namespace envcrust;
 
@@ -142,4 +143,59 @@ TEST(SelfIntersections, a_recheck_finds_every_pair_whatever_the_face_sizes) {
   }
   ASSERT_GT(upper_faces, 0u);
   EXPECT_EQ(mesh::self_intersections(m, 8, &upper).face_pairs, 0u);  // none of them reaches the plane
+}
+
+// Faces lying exactly in one plane (a flat region of a result, or of a CAD mesh) are decided
+// by separating planes in interval arithmetic: the answers must be those of the exact
+// triangle test, touching and overlapping included.
+TEST(SelfIntersections, triangles_in_one_plane_read_as_the_exact_test_reads_them) {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(0, 6);
+  // z = 0, and a tilted plane z = x + 2 y that integer coordinates keep exact.
+  for (const bool tilted : {false, true}) {
+    int meeting = 0, apart = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+      std::array<Point3, 6> corners;
+      for (auto& p : corners) {
+        const double x = coordinate(random), y = coordinate(random);
+        p = Point3(x, y, tilted ? x + 2 * y : 0.0);
+      }
+      const Kernel::Triangle_3 a(corners[0], corners[1], corners[2]), b(corners[3], corners[4], corners[5]);
+      if (a.is_degenerate() || b.is_degenerate()) continue;
+      bool shares = false;  // a common corner is a shared vertex once welded: another case
+      for (int i = 0; i < 3; ++i)
+        for (int j = 3; j < 6; ++j) shares = shares || corners[i] == corners[j];
+      if (shares) continue;
+      const bool expected = CGAL::do_intersect(a, b);
+      (expected ? meeting : apart) += 1;
+      const auto found = mesh::self_intersections(
+          two_triangles({corners[0], corners[1], corners[2]}, {corners[3], corners[4], corners[5]}));
+      ASSERT_EQ(found.face_pairs, expected ? 1u : 0u)
+          << "trial " << trial << (tilted ? " (tilted plane)" : " (z = 0)");
+    }
+    // Both outcomes occur often enough to mean something (touching corners and edges included).
+    EXPECT_GT(meeting, 50);
+    EXPECT_GT(apart, 50);
+  }
+}
+
+TEST(SelfIntersections, a_flat_grid_has_none_and_a_flap_folded_onto_it_is_found) {
+  TriangleMesh grid;
+  constexpr int n = 60;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) grid.vertices.emplace_back(i, j, 0);
+  auto at = [](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      grid.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      grid.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  EXPECT_EQ(mesh::self_intersections(grid).face_pairs, 0u);
+  // A flap hinged on the border edge (0,0)-(1,0) and folded flat back over the grid's first
+  // two faces: it overlaps both (it shares the edge with the first, a vertex with the second).
+  grid.vertices.emplace_back(0.5, 0.6, 0);
+  grid.triangles.push_back({at(1, 0), at(0, 0), static_cast<Index>(grid.vertices.size() - 1)});
+  const auto folded = mesh::self_intersections(grid);
+  EXPECT_EQ(folded.face_pairs, 2u);
+  EXPECT_EQ(folded.faces, 3u);
 }
