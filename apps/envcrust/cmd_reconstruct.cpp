@@ -316,7 +316,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
     j["envelope_crust"] = {{"faces", crust.faces}, {"euler_characteristic", crust.euler_characteristic},
                            {"is_closed", crust.is_closed()}, {"is_manifold", crust.is_manifold()}};
   }
-  std::vector<std::string> warnings = result.warnings;
+  std::vector<std::string> warnings = loaded.warnings;
+  warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
   std::optional<analysis::AnalysisReport> report;
   std::optional<double> boundary_gap;  // of the reference's boundary from the samples, / diagonal
   std::vector<std::size_t> unresolved_curves;  // input curves below the resolution (boundary check)

@@ -47,6 +47,8 @@ struct LoadedSurface {
   std::optional<boundary::BoundaryDetection> detection;
   double min_loop_width = 0.0;  ///< the --boundary-min-width the detection used
   std::vector<std::string> notes;     ///< e.g. "normals estimated (PCA, k 16)"
+  /// What the input makes the reconstruction likely to get wrong (a mesh's sharp creases).
+  std::vector<std::string> warnings;
   /// Point files: the stray samples removed (see BuiltinSampling::remove_outliers).
   std::vector<Point3> outliers;
 };

@@ -4,6 +4,7 @@
 #include "envcrust/types.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,7 +74,8 @@ struct SelfIntersections {
   std::vector<Point3> examples;   ///< centroids of a face of some pairs (sorted; at most max_examples)
 };
 
-/// Find the self-intersections (candidates by bounding boxes, in parallel; exact predicates).
+/// Find the self-intersections (candidates by bounding boxes; each decided in parallel by a
+/// separating plane in interval arithmetic, else exact predicates).
 /// Degenerate faces, faces with a repeated vertex and repeated faces are left out. With
 /// `only_faces` (one flag per face), only the pairs with a flagged face are looked for: a
 /// re-check after a local change.
@@ -107,6 +109,21 @@ struct SpatiallyOrdered {
 /// Voronoi cells come in an order unrelated to space; halfedge algorithms that walk
 /// neighbourhoods (edge collapse, remeshing) then miss the cache at every step.
 SpatiallyOrdered order_spatially(const TriangleMesh& mesh);
+
+/// The edges along which a mesh bends sharply (creases, as of a CAD part or a folded sheet).
+struct SharpEdges {
+  std::size_t count = 0;         ///< edges of two faces bent by more than the threshold
+  double total_length = 0.0;     ///< their summed length
+  double max_bend_deg = 0.0;     ///< the largest bend found (over all edges of two faces)
+  std::optional<Point3> sharpest;  ///< the midpoint of the most bent edge, when count > 0
+};
+
+/// The edges shared by exactly two faces (welded by exact coordinates) whose normals make
+/// more than `min_bend_deg`: 0 for a flat continuation, 180 for a sheet folded back onto
+/// itself. Faces that run the edge the same way (an inconsistent or non-orientable winding)
+/// are compared with one normal reversed, so the bend does not depend on the winding.
+/// Degenerate faces are left out.
+SharpEdges sharp_edges(const TriangleMesh& mesh, double min_bend_deg);
 
 /// `count` points drawn uniformly by area on the triangles, deterministic for `seed`.
 std::vector<Point3> sample_by_area(const TriangleMesh& mesh, std::size_t count,

@@ -1,6 +1,7 @@
 // End-to-end tests of the envcrust binary: outputs, reports, exit codes and error messages.
 #include "cli_fixture.h"
 #include "envcrust/io.h"
+#include "fixtures/shapes.h"
 #include "run_command.h"
 
 #include <gtest/gtest.h>
@@ -1186,4 +1187,30 @@ TEST_F(CliTest, boundary_take_in_brings_the_curve_out_to_the_samples_beyond_it) 
   const double gap = taken["reference"]["samples_gap"]["max_rel_diag"].get<double>();
   EXPECT_LT(after, 0.85 * before);
   EXPECT_LT(after, 1.25 * gap);
+}
+
+// A mesh bent by more than 80 degrees along a long crease gets a warning naming the crease:
+// the sheet does not pair samples across it (SheetOptions::min_angle_deg), and the result
+// comes out torn there. Bent by 45 degrees, it is one disc and gets none.
+TEST_F(CliTest, reconstruct_warns_of_a_mesh_crease_sharper_than_the_sheet_crosses) {
+  auto warnings_of = [](const nlohmann::json& j) {
+    std::vector<std::string> out;
+    for (const auto& w : j["warnings"]) out.push_back(w.get<std::string>());
+    return out;
+  };
+  envcrust::io::write_mesh(path("fold90.off"), envcrust::fixtures::folded_sheet(90.0, 20));
+  const auto sharp = run_envcrust_json("reconstruct " + path("fold90.off") + " --rho 0.1 --no-adaptive-retry -o " +
+                                       path("r90.ply") + " --json");
+  const auto w90 = warnings_of(sharp);
+  ASSERT_FALSE(w90.empty());
+  EXPECT_EQ(w90.front(),
+            "the mesh bends by more than 80 degrees across 20 edges (1 long in all, up to 90 degrees near (0, 0.025, "
+            "0)): the envelope method tears the result apart or closes it along such creases");
+  envcrust::io::write_mesh(path("fold45.off"), envcrust::fixtures::folded_sheet(45.0, 20));
+  const auto mild = run_envcrust_json("reconstruct " + path("fold45.off") + " --rho 0.1 --no-adaptive-retry -o " +
+                                      path("r45.ply") + " --json");
+  for (const auto& w : warnings_of(mild)) EXPECT_EQ(w.find("bends by more than"), std::string::npos) << w;
+  EXPECT_EQ(mild["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(mild["analysis"]["boundary_loops"], 1);
+  EXPECT_EQ(mild["analysis"]["components"], 1);
 }
