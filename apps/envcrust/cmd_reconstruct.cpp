@@ -500,6 +500,11 @@ void register_reconstruct(CLI::App& app) {
   sub->add_flag("--keep-cut-holes", [cmd](std::int64_t) { cmd->options.sheet.fill_cut_holes = false; },
                 "With --orientable or --cut-handles: leave the holes the cuts make open instead of closing them "
                 "(those along a boundary curve are never closed)");
+  sub->add_option("--fold-angle", cmd->options.sheet.fold_min_angle_deg,
+                  "Sharp folds: also join envelope samples whose offset directions make at least this many "
+                  "degrees (below 100) when the segment between them passes through the surface (0: off)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 99.0));
   sub->add_option("--self-intersection-cut", cmd->options.sheet.self_intersection_cut_rel_rho,
                   "Where the result passes through itself, relax the vertices there; where that is not enough, "
                   "remove the faces within this radius (in rho) and close the holes with discs (reported; 0: off)")

@@ -23,6 +23,13 @@ struct SheetOptions {
   /// offset directions u_p and u_q is at least this (METHOD.md §5 c1: 100 degrees; three
   /// pairwise-selected rim edges cannot fit on a half-circle). Range (90, 180).
   double min_angle_deg = 100.0;
+  /// Across a sharp fold of M (a crease bent by b > 80 degrees) the samples either side make
+  /// 180 - b < min_angle_deg: an edge whose directions make at least this is also taken when
+  /// the segment pq passes within fold_clearance_rel_rho rho of M (the fin of the envelope's
+  /// inner medial axis at the fold pairs samples b apart whose segment stays ~0.5 rho off M).
+  /// 0 disables; below min_angle_deg.
+  double fold_min_angle_deg = 0.0;
+  double fold_clearance_rel_rho = 0.25;
   /// A component of the sheet is kept when the median distance of its vertices to the surface
   /// samples is below this fraction of rho (the outer medial axis of E lies >= R - rho away).
   double max_component_distance_rel_rho = 0.5;

@@ -118,7 +118,8 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   // Each step is announced with the share of the stage done before it (the steps' shares of
   // the bunny's extraction time).
   progress.report("sheet: Voronoi polygons", 0.0);
-  const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg);
+  const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg, options.fold_min_angle_deg,
+                                     options.fold_clearance_rel_rho);
   result.stats.delaunay_edges = raw.delaunay_edges;
   result.stats.crossing_edges = raw.crossing_edges;
   result.stats.polygons = raw.polygons.size();

@@ -2,6 +2,7 @@
 #include "voronoi_sheet.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/nearest_index.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -18,6 +19,7 @@
 #include <map>
 #include <numeric>
 #include <numbers>
+#include <optional>
 
 namespace envcrust::extract {
 namespace {
@@ -32,7 +34,8 @@ constexpr Index kUnused = std::numeric_limits<Index>::max();
 
 }  // namespace
 
-RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg) {
+RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg, double fold_min_angle_deg,
+                       double fold_clearance_rel_rho) {
   const auto& samples = envelope.samples;
   if (samples.size() < 5) throw DegenerateInput("envelope has fewer than 5 samples");
   // Insert along a Hilbert curve, each point located from the previous one (what the range
@@ -73,6 +76,28 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     if (dt.is_infinite(c)) c->info() = kUnused;
 
   const double max_dot = std::cos(min_angle_deg * std::numbers::pi / 180.0);
+  // Fold pairs: a segment that passes through M where its two halves meet at a sharp angle
+  // (points along it checked against the generators, which sample M).
+  const bool use_folds = fold_min_angle_deg > 0 && fold_min_angle_deg < min_angle_deg;
+  const double max_fold_dot = std::cos(fold_min_angle_deg * std::numbers::pi / 180.0);
+  std::vector<Point3> generators;
+  if (use_folds) {
+    generators.reserve(samples.size());
+    for (const auto& s : samples) generators.push_back(s.generator);
+  }
+  const std::optional<NearestIndex> generator_index =
+      use_folds ? std::optional<NearestIndex>(std::in_place, generators) : std::nullopt;
+  auto crosses_m = [&](Index p, Index q) {
+    const double rho = std::sqrt(std::min(CGAL::squared_distance(samples[p].position, samples[p].generator),
+                                          CGAL::squared_distance(samples[q].position, samples[q].generator)));
+    constexpr int kSteps = 16;
+    for (int k = 1; k < kSteps; ++k) {
+      const double t = static_cast<double>(k) / kSteps;
+      const Point3 x = samples[p].position + t * (samples[q].position - samples[p].position);
+      if (generator_index->any_within(x, fold_clearance_rel_rho * rho)) return true;
+    }
+    return false;
+  };
   RawSheet sheet;
   struct CrossingEdge {
     std::pair<Index, Index> key;  // sample indices, smaller first
@@ -86,7 +111,7 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     const Index p = cell->vertex(e->second)->info();
     const Index q = cell->vertex(e->third)->info();
     const double dot = samples[p].direction * samples[q].direction;
-    if (dot > max_dot) continue;
+    if (dot > max_dot && !(use_folds && dot <= max_fold_dot && crosses_m(p, q))) continue;
     ++sheet.crossing_edges;
     CrossingEdge edge{std::minmax(p, q), {}, dot};
     bool bounded = true;

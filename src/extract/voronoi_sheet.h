@@ -20,6 +20,10 @@ struct RawSheet {
 /// the edges whose offset directions make at least `min_angle_deg`. A cell's vertex is the
 /// mean of the midpoints of its selected edges: the midpoint of a crossing edge lies on M to
 /// first order, while circumcentres of slivers are thrown far off (METHOD.md §5 c1 probe).
-RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg);
+/// An edge whose directions make less than `min_angle_deg` but at least `fold_min_angle_deg`
+/// is also taken when the segment pq passes within `fold_clearance_rel_rho` rho of a
+/// generator (a point of M): it crosses M at a sharp fold (0 disables).
+RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg,
+                       double fold_min_angle_deg = 0.0, double fold_clearance_rel_rho = 0.25);
 
 }  // namespace envcrust::extract

@@ -1213,4 +1213,16 @@ TEST_F(CliTest, reconstruct_warns_of_a_mesh_crease_sharper_than_the_sheet_crosse
   EXPECT_EQ(mild["analysis"]["euler_characteristic"], 1);
   EXPECT_EQ(mild["analysis"]["boundary_loops"], 1);
   EXPECT_EQ(mild["analysis"]["components"], 1);
+  // The fold at 90 degrees: torn in two by default; with --fold-angle 60 the pairs whose
+  // segment passes through the sheet at the fold join the halves into one disc.
+  EXPECT_EQ(sharp["analysis"]["components"], 2);
+  const auto joined = run_envcrust_json("reconstruct " + path("fold90.off") +
+                                        " --rho 0.1 --fold-angle 60 --no-adaptive-retry -o " + path("j90.ply") + " --json");
+  EXPECT_EQ(joined["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(joined["analysis"]["boundary_loops"], 1);
+  EXPECT_EQ(joined["analysis"]["components"], 1);
+  EXPECT_EQ(joined["analysis"]["is_manifold"], true);
+  // The fold is rounded off within rho (0.1, 5.8% of the diagonal 1.73).
+  EXPECT_LT(joined["analysis"]["distance"]["mesh_to_reference"]["max"].get<double>(), 0.1);
+  EXPECT_LT(joined["analysis"]["distance"]["reference_to_mesh"]["max"].get<double>(), 0.1);
 }
