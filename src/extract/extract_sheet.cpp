@@ -40,6 +40,9 @@ void validate(const SheetOptions& o) {
     throw InvalidOptions(s.str());
   };
   if (!(o.min_angle_deg > 90 && o.min_angle_deg < 180)) fail("min_angle_deg", o.min_angle_deg);
+  if (!(o.fold_min_angle_deg >= 0 && o.fold_min_angle_deg < o.min_angle_deg))
+    fail("fold_min_angle_deg", o.fold_min_angle_deg);
+  if (!(o.fold_clearance_rel_rho > 0)) fail("fold_clearance_rel_rho", o.fold_clearance_rel_rho);
   if (!(o.max_component_distance_rel_rho > 0)) fail("max_component_distance_rel_rho", o.max_component_distance_rel_rho);
   if (!(o.max_component_distance_rel_spacing >= 0))
     fail("max_component_distance_rel_spacing", o.max_component_distance_rel_spacing);

@@ -309,6 +309,33 @@ TEST(SheetCutToOrientable, refuses_a_non_positive_band) {
   }
 }
 
+// Fold pairs (SheetOptions::fold_min_angle_deg) are for sharp creases: on smooth surfaces
+// with their rims, no pair of samples whose directions make 60-100 degrees has a segment
+// through M, and the result is the same; the angle must stay below min_angle_deg.
+TEST(SheetFoldPairs, leave_smooth_surfaces_with_rims_as_they_were) {
+  for (const std::string name : {"cylinder", "square", "moebius"}) {
+    SCOPED_TRACE(name);
+    const auto samples = exact_samples(*surfaces::make_builtin(name), 3000);
+    const auto env = envelope::sample_envelope(samples);
+    extract::SheetOptions folds;
+    folds.fold_min_angle_deg = 60;
+    const auto with = extract::extract_sheet(env, samples, folds);
+    const auto without = extract::extract_sheet(env, samples);
+    EXPECT_EQ(with.stats.crossing_edges, without.stats.crossing_edges);
+    EXPECT_EQ(with.mesh.triangles, without.mesh.triangles);
+  }
+  const auto samples = exact_samples(*surfaces::make_builtin("cylinder"), 2000);
+  const auto env = envelope::sample_envelope(samples);
+  extract::SheetOptions options;
+  options.fold_min_angle_deg = 100;
+  try {
+    extract::extract_sheet(env, samples, options);
+    FAIL() << "expected InvalidOptions";
+  } catch (const InvalidOptions& e) {
+    EXPECT_STREQ(e.what(), "SheetOptions::fold_min_angle_deg out of range (got 100)");
+  }
+}
+
 // The progress callback hears every step, in order, as it begins, with the share of the
 // stage done before it rising from 0.
 TEST(SheetProgress, announces_each_step_in_order) {
