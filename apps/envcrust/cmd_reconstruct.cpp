@@ -39,6 +39,7 @@ struct ReconstructCommand {
   std::string report_file;
   bool no_analysis = false;
   bool no_adaptive_retry = false;
+  bool no_power_crust_fallback = false;
   bool use_remesh = false;
   remesh::RemeshOptions remesh;  // used with --remesh
   std::string orientable = "auto";    // --orientable: auto, yes or no
@@ -157,6 +158,7 @@ void choose_input_options(ReconstructCommand& cmd, const LoadedSurface& loaded) 
   }
   if (cmd.cut_handles) sheet.cut_handles_rel_rho = *cmd.cut_handles;
   if (cmd.no_adaptive_retry) cmd.options.use_adaptive_retry = false;
+  if (cmd.no_power_crust_fallback) cmd.options.use_power_crust_fallback = false;
   if (cmd.options.method == pipeline::Method::Envelope && cmd.options.extraction == pipeline::Extraction::Sheet) return;
   if (cmd.orientable == "yes" || cmd.cut_handles.value_or(0) > 0)
     throw UsageError("--orientable and --cut-handles apply to the medial sheet (--method envelope --extract sheet)");
@@ -170,6 +172,7 @@ std::string describe(const pipeline::RunDefects& d, const std::optional<long>& m
   auto count = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + (n == 1 ? one : many); };
   if (d.extra_loops > 0) out += ", " + count(d.extra_loops, " hole the input has not", " holes the input has not");
   if (d.missing_curves > 0) out += ", " + count(d.missing_curves, " input curve not followed", " input curves not followed");
+  if (d.extra_pieces > 0) out += ", " + count(d.extra_pieces, " piece more than the samples form", " pieces more than the samples form");
   return out + " (" + count(d.count(max_genus), " defect", " defects") + ")";
 }
 
@@ -180,11 +183,28 @@ std::string describe(const pipeline::AdaptiveRetry& retry) {
          (retry.kept_adaptive ? "kept" : "not kept") + " (--no-adaptive-retry: keep the uniform run)";
 }
 
+std::string describe(const pipeline::PowerCrustFallback& fallback, const std::optional<long>& max_genus) {
+  std::ostringstream spans;
+  if (fallback.crust_farthest_from_samples > fallback.crust_allowed_distance)
+    spans << std::setprecision(4) << " and reaches " << fallback.crust_farthest_from_samples
+          << " from the samples, beyond their gaps (" << fallback.crust_allowed_distance << "): it caps holes";
+  const std::string spans_holes = spans.str();
+  return std::string(fallback.envelope.missing_curves + fallback.envelope.extra_loops > 0 || fallback.power_crust.missing_curves > 0
+                         ? "the input's curves were detected (maybe false ones)"
+                         : "the input has no boundary curve") +
+         " and the envelope's result has " +
+         describe(fallback.envelope, max_genus) + " (the samples form " + std::to_string(fallback.sample_groups) +
+         (fallback.sample_groups == 1 ? " set" : " sets") + " within 2 rho); the direct Power Crust's has " +
+         describe(fallback.power_crust, max_genus) + spans_holes + ", " +
+         (fallback.kept_power_crust ? "kept" : "not kept") + " (--no-power-crust-fallback: keep the envelope's)";
+}
+
 nlohmann::json defects_json(const pipeline::RunDefects& d, const std::optional<long>& max_genus) {
   return {{"empty", d.is_empty},
           {"genus", d.genus ? nlohmann::json(*d.genus) : nlohmann::json(nullptr)},
           {"extra_loops", d.extra_loops},
           {"missing_curves", d.missing_curves},
+          {"extra_pieces", d.extra_pieces},
           {"defects", d.genus ? nlohmann::json(d.count(max_genus)) : nlohmann::json(nullptr)}};
 }
 
@@ -262,6 +282,14 @@ void run_reconstruct(ReconstructCommand& cmd) {
                            {"uniform", defects_json(retry->uniform, retry->max_genus)},
                            {"adaptive", defects_json(retry->adaptive, retry->max_genus)},
                            {"kept", retry->kept_adaptive ? "adaptive" : "uniform"}};
+  }
+  if (const auto& f = result.power_crust_fallback) {
+    j["power_crust_fallback"] = {{"sample_groups", f->sample_groups},
+                                 {"envelope", defects_json(f->envelope, cmd.options.max_genus)},
+                                 {"power_crust", defects_json(f->power_crust, cmd.options.max_genus)},
+                                 {"crust_farthest_from_samples", f->crust_farthest_from_samples},
+                                 {"crust_allowed_distance", f->crust_allowed_distance},
+                                 {"kept", f->kept_power_crust ? "power_crust" : "envelope"}};
   }
   if (loaded.detection && !loaded.detection->loop_widths.empty())
     j["input_boundary_widths"] = loaded.detection->loop_widths;
@@ -349,7 +377,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
     // The result's border against the curves the reconstruction was given or detected.
     std::vector<Polyline> curves;
     for (const auto& c : loaded.samples.boundary) curves.push_back(c.polyline());
-    const bool is_envelope = cmd.options.method == pipeline::Method::Envelope;
+    const bool is_envelope = result.method == pipeline::Method::Envelope;
     const auto check =
         is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope)
                     : analysis::check_boundary(report->topology, curves, 0.01 * mesh::bbox_diagonal(loaded.samples.points));
@@ -362,8 +390,11 @@ void run_reconstruct(ReconstructCommand& cmd) {
       warnings.push_back(std::move(w));
   }
   j["warnings"] = warnings;
+  // The hints are for the method whose result this is (the fallback's Power Crust gets none).
+  pipeline::ReconstructOptions result_options = cmd.options;
+  result_options.method = result.method;
   const std::vector<std::string> hints =
-      report ? scan_hints(loaded, cmd.options, *report, unresolved_curves, result.envelope) : std::vector<std::string>{};
+      report ? scan_hints(loaded, result_options, *report, unresolved_curves, result.envelope) : std::vector<std::string>{};
   j["hints"] = hints;
   // Every output is written once nothing can fail any more, so a failed run leaves none.
   const std::string report_text = json_text(j);
@@ -399,6 +430,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << " samples\n";
   if (retry)
     std::cout << "  " << describe(*retry) << "\n";
+  if (const auto& f = result.power_crust_fallback) std::cout << "  " << describe(*f, cmd.options.max_genus) << "\n";
   // The stages that ran (the sheet runs its own Delaunay triangulation, no power crust).
   std::cout << "  time:";
   const char* separator = " ";
@@ -407,8 +439,10 @@ void run_reconstruct(ReconstructCommand& cmd) {
     separator = ", ";
   };
   if (cmd.options.method == pipeline::Method::Envelope) stage("envelope", result.seconds.envelope);
-  if (result.power_crust_stats)
-    stage(cmd.options.method == pipeline::Method::Envelope ? "power crust of the envelope" : "power crust",
+  if (result.power_crust_stats || result.power_crust_fallback)
+    stage(cmd.options.method == pipeline::Method::PowerCrust ? "power crust"
+          : result.power_crust_fallback                     ? "direct power crust"
+                                                            : "power crust of the envelope",
           result.seconds.power_crust);
   if (result.sheet_stats) stage("extraction", result.seconds.extraction);
   std::cout << "\n";
@@ -542,6 +576,10 @@ void register_reconstruct(CLI::App& app) {
                 "Keep the uniform-rho run even when its result has holes the input has not, or more handles than "
                 "a mesh input (by default the reconstruction then runs again with --rho-adaptive and keeps the "
                 "run with fewer defects)");
+  sub->add_flag("--no-power-crust-fallback", cmd->no_power_crust_fallback,
+                "Keep the envelope's result of an input without boundary curves even when it falls apart (by "
+                "default the direct Power Crust, which needs no normals and copes with sparser samples of a closed "
+                "surface, then runs too and the result with fewer defects is kept)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_reconstruct(*cmd); });

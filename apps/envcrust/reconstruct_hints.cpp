@@ -1,9 +1,6 @@
 // The hints of `envcrust reconstruct` for scans.
 #include "reconstruct_hints.h"
 
-#include "envcrust/nearest_index.h"
-#include "envcrust/union_find.h"
-
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -64,20 +61,6 @@ std::optional<std::string> narrow_loops_hint(const LoadedSurface& loaded, const 
   return h.str();
 }
 
-// Groups of samples joined by chains of neighbours (each one's 8 nearest) within `reach`:
-// at least as many as the pieces of the union of balls of radius reach / 2 around them.
-std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
-  if (points.empty()) return 0;
-  const NearestIndex index(points);
-  topology::UnionFind groups(points.size());
-  const auto k = static_cast<unsigned>(std::min<std::size_t>(9, points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (const auto& [j, d] : index.nearest(points[i], k))
-      if (d <= reach) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
-  std::vector<std::uint32_t> label;
-  return groups.label_sets(label);
-}
-
 // A point file whose result falls into more pieces than its samples form (within 2 rho, where
 // the envelope's balls overlap) was too sparse for the estimated normals or the envelope's
 // sheet: the direct Power Crust needs no normals and copes with sparser samples of a closed
@@ -86,7 +69,7 @@ std::optional<std::string> pieces_hint(const LoadedSurface& loaded, const analys
                                        const envelope::EnvelopeSamples& envelope) {
   const std::size_t pieces = report.topology.components.size();
   if (loaded.source != "points" || pieces < 2 || envelope.rho <= 0) return std::nullopt;
-  const std::size_t groups = sample_groups(loaded.samples.points, 2.0 * envelope.rho);
+  const std::size_t groups = pipeline::sample_groups(loaded.samples.points, 2.0 * envelope.rho);
   if (pieces <= groups) return std::nullopt;
   std::ostringstream h;
   h << std::setprecision(4) << "the result has " << pieces << " pieces where the samples form " << groups

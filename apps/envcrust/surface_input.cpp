@@ -232,6 +232,7 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
       out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                           std::to_string(detection.dropped_loops) + " short loops dropped)");
       out.samples.boundary = std::move(detection.curves);
+      out.kind.is_boundary_detected = true;
       detection.curves.clear();
       out.min_loop_width = sampling.boundary.min_loop_width;
       for (const auto& w : detection.warnings) out.notes.push_back(w);

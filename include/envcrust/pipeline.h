@@ -50,6 +50,20 @@ struct ReconstructOptions {
   /// half the reach to bridge the input's gaps (the envelope may fold into handles there).
   /// Off: one run.
   bool use_adaptive_retry = false;
+  /// When the input has no boundary curves (a closed surface), or only curves detected from its
+  /// points (are_curves_detected), and the envelope's result, after the adaptive retry if that
+  /// ran, fails the same check (empty, no manifold, more pieces than the samples form, handles
+  /// while rho was raised for gaps), run the direct Power Crust too and keep its result if it
+  /// has fewer defects (each input curve it closes counts as one; ReconstructResult::
+  /// power_crust_fallback) and spans no hole (stays within the samples' gap size of them). A closed sample too sparse for the envelope (its gaps need a rho
+  /// beyond the reach) is the Power Crust's home ground: it needs no normals and no rho, and
+  /// curves detected in such a sample are often false ones. Not for an input too sparse for
+  /// its size (EnvelopeSamples::is_input_too_sparse: no method can tell its shape). Method::
+  /// Envelope with Extraction::Sheet only.
+  bool use_power_crust_fallback = false;
+  /// The input's boundary curves were detected from its points, not given: the fallback may
+  /// close them (a mesh's or a built-in surface's own curves, or curves given, are trusted).
+  bool are_curves_detected = false;
   /// Turn each piece of a medial-sheet result to face like the input's normals
   /// (topology::orient_along_normals); the sheet itself comes out with either side up. Off for
   /// estimated normal lines, whose signs are arbitrary (options_for_input).
@@ -65,6 +79,7 @@ struct InputKind {
   bool are_normals_estimated = false;  ///< normal lines estimated from the points, not given
   std::optional<bool> is_orientable;   ///< a mesh input's own; unknown for point files and built-in samples
   std::optional<long> genus;           ///< a mesh input's own, handles and cross-caps summed over components
+  bool is_boundary_detected = false;   ///< boundary curves detected from the points (maybe false ones)
 };
 
 /// Handle cuts of a scan's medial sheet (SheetOptions::cut_handles_rel_rho): at rho <= reach/2
@@ -78,7 +93,8 @@ inline constexpr double kScanCutHandlesRelRho = 1.5;
 /// the medial sheet of a scan is cut at handles (kScanCutHandlesRelRho) and to an orientable
 /// sheet, at every seam for an orientable mesh and for a point file (which does not say) only
 /// at seams an orientation-reversing loop shorter than extract::kTwistMinLoopRelRho crosses;
-/// the adaptive retry is on when rho is automatic, with a mesh's genus as max_genus. Built-in
+/// the adaptive retry and the Power Crust fallback are on when rho is automatic, with a mesh's
+/// genus as max_genus. Built-in
 /// samples keep the method as it is (the experiments measure it) apart from the retry.
 ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions options = {});
 
@@ -90,7 +106,10 @@ struct RunDefects {
   /// resolution too: the adaptive run's smaller rho may resolve what the uniform one cannot.
   std::size_t missing_curves = 0;
   std::size_t extra_loops = 0;     ///< border loops that follow no input boundary curve within 2 rho
-  /// missing_curves + extra_loops + the handles and cross-caps beyond max_genus (all of them
+  /// Pieces of the result beyond the sets the samples form (sample_groups within 2 rho, where
+  /// the envelope's balls overlap): the result fell apart where the samples hold together.
+  std::size_t extra_pieces = 0;
+  /// missing_curves + extra_loops + extra_pieces + the handles and cross-caps beyond max_genus (all of them
   /// when it is unknown); the largest value for no manifold.
   [[nodiscard]] std::size_t count(std::optional<long> max_genus) const;
   /// Fewer defects than `other`, or as many with fewer handles and cross-caps beyond
@@ -104,6 +123,18 @@ struct AdaptiveRetry {
   std::optional<long> max_genus;
   RunDefects uniform, adaptive;
   bool kept_adaptive = false;
+};
+
+/// What the Power Crust fallback did (ReconstructOptions::use_power_crust_fallback).
+struct PowerCrustFallback {
+  std::size_t sample_groups = 0;   ///< sets the samples form within 2 rho
+  RunDefects envelope, power_crust;
+  /// The Power Crust's result must stay near the samples: a cap across a hole does not (the
+  /// hole was real, detected or not). Its farthest vertex or face centre from the nearest
+  /// sample, and the bound: the largest distance of 99% of the samples to their 8th nearest
+  /// (the envelope's gap measure). Zero when the Power Crust had more defects (not measured).
+  double crust_farthest_from_samples = 0, crust_allowed_distance = 0;
+  bool kept_power_crust = false;
 };
 
 /// Seconds spent per stage.
@@ -120,6 +151,10 @@ struct ReconstructResult {
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
   std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
+  std::optional<PowerCrustFallback> power_crust_fallback;  ///< set when the fallback ran
+  /// The method whose result `mesh` is: options.method, or PowerCrust when the fallback's run
+  /// was kept (then `envelope` and `sheet_stats` describe the envelope run it replaced).
+  Method method = Method::Envelope;
   /// The topology of `mesh` when the retry check computed it (and no remeshing changed the
   /// mesh since): analysis::analyze_mesh takes it instead of computing it again.
   std::optional<topology::MeshTopology> topology;
@@ -129,7 +164,8 @@ struct ReconstructResult {
 
 /// Reconstruct M from its samples (points with normal lines and boundary curves): one run,
 /// a second with adaptive rho if the first fails the check of options.use_adaptive_retry,
-/// then the remeshing.
+/// the direct Power Crust if the input has no boundary curves and the kept run still fails
+/// (options.use_power_crust_fallback), then the remeshing.
 /// @throws InvalidInput, DegenerateInput, InvalidOptions from the stages.
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options = {}, const Progress& progress = {});
@@ -141,6 +177,12 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
 analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& result,
                                               const envelope::SurfaceSamples& samples,
                                               const envelope::EnvelopeSamples& envelope);
+
+/// Sets of samples joined by chains of neighbours (each one with its 8 nearest) no farther
+/// apart than `reach`: at least as many as the pieces of the union of the balls of radius
+/// reach / 2 around them, so an envelope of radius rho around them has at least as many
+/// pieces as they form within 2 rho, and a result of more pieces fell apart.
+std::size_t sample_groups(const std::vector<Point3>& points, double reach);
 
 /// The power shape's triangles as a mesh whose vertices are the In poles, in pole order (the
 /// paper's output; the power shape holds only In poles).

@@ -106,7 +106,8 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
   pipeline::InputKind kind;  // a point file, as `reconstruct` runs it
   kind.is_builtin = false;
   kind.are_normals_estimated = !scan.points.has_normals();
-  const auto ro = pipeline::options_for_input(kind, method_options(pipeline::Method::Envelope, options.seed));
+  auto ro = pipeline::options_for_input(kind, method_options(pipeline::Method::Envelope, options.seed));
+  ro.use_power_crust_fallback = false;  // the envelope's own result, beside the direct one
   Trial envelope_trial = run_trial(samples, ro, reference, expected, true);
   if (!has_expected) envelope_trial.is_topology_correct = false;
 

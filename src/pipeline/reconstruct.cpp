@@ -1,7 +1,9 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
+#include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
+#include "envcrust/union_find.h"
 
 #include <algorithm>
 #include <limits>
@@ -52,6 +54,8 @@ ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions 
         is_point_file ? extract::kTwistMinLoopRelRho : std::numeric_limits<double>::infinity();
   }
   options.use_adaptive_retry = !options.envelope.rho.has_value();
+  options.use_power_crust_fallback = options.use_adaptive_retry;
+  options.are_curves_detected = input.is_boundary_detected;
   options.max_genus = input.genus;
   return options;
 }
@@ -118,16 +122,36 @@ ReconstructResult reconstruct_once(const envelope::SurfaceSamples& samples, cons
   return out;
 }
 
-// The checks of one run; its topology is kept in run.topology for the report.
-RunDefects defects_of(ReconstructResult& run, const envelope::SurfaceSamples& samples) {
+// The sets the samples form within 2 rho, counted once and only when a result has several
+// pieces (a kd-tree over the input costs about a second per million points).
+class SampleGroups {
+ public:
+  SampleGroups(const envelope::SurfaceSamples& samples, double rho) : samples_(samples), rho_(rho) {}
+  std::size_t count() {
+    if (!count_) count_ = sample_groups(samples_.points, 2.0 * rho_);
+    return *count_;
+  }
+
+ private:
+  const envelope::SurfaceSamples& samples_;
+  double rho_;
+  std::optional<std::size_t> count_;
+};
+
+// The checks of one run; its topology is kept in run.topology for the report. The border is
+// checked against the envelope run's rho (`envelope`: the run's own, or for a Power Crust run
+// the envelope run it competes with).
+RunDefects defects_of(ReconstructResult& run, const envelope::SurfaceSamples& samples,
+                      const envelope::EnvelopeSamples& envelope, SampleGroups& groups) {
   RunDefects d;
   d.is_empty = run.mesh.triangles.empty();
   if (d.is_empty) return d;
   const topology::MeshTopology& t = run.topology.emplace(topology::analyze_topology(run.mesh));
   d.genus = topology::total_genus(t);
-  const analysis::BoundaryCheck check = check_result_boundary(t, samples, run.envelope);
+  const analysis::BoundaryCheck check = check_result_boundary(t, samples, envelope);
   d.missing_curves = check.missing_curves.size() + check.unresolved_curves.size();
   d.extra_loops = check.extra_loops.size();
+  if (t.components.size() > 1) d.extra_pieces = t.components.size() - std::min(t.components.size(), groups.count());
   return d;
 }
 
@@ -136,7 +160,7 @@ RunDefects defects_of(ReconstructResult& run, const envelope::SurfaceSamples& sa
 // the input's gaps (where the envelope may fold into handles: the uniform rho is too large
 // for the thin parts and too small for the sparse ones, which adaptive rho is for).
 bool fails(const RunDefects& d, const envelope::EnvelopeSamples& envelope, std::optional<long> max_genus) {
-  if (!d.genus || d.extra_loops > 0) return true;
+  if (!d.genus || d.extra_loops > 0 || d.extra_pieces > 0) return true;
   if (max_genus) return *d.genus > *max_genus;
   return *d.genus > 0 && envelope.is_rho_gap_bound;
 }
@@ -152,7 +176,7 @@ long excess_genus(long genus, std::optional<long> max_genus) { return std::max(0
 
 std::size_t RunDefects::count(std::optional<long> max_genus) const {
   if (!genus) return std::numeric_limits<std::size_t>::max();
-  return missing_curves + extra_loops + static_cast<std::size_t>(excess_genus(*genus, max_genus));
+  return missing_curves + extra_loops + extra_pieces + static_cast<std::size_t>(excess_genus(*genus, max_genus));
 }
 
 bool RunDefects::is_better_than(const RunDefects& other, std::optional<long> max_genus) const {
@@ -172,31 +196,115 @@ analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& resu
   return analysis::check_boundary(result, curves, 2.0 * envelope.rho, 0.9, 2.0 * std::numbers::pi * rho_min);
 }
 
+std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
+  if (points.empty()) return 0;
+  const NearestIndex index(points);
+  topology::UnionFind groups(points.size());
+  const auto k = static_cast<unsigned>(std::min<std::size_t>(9, points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (const auto& [j, d] : index.nearest(points[i], k))
+      if (d <= reach) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
+  std::vector<std::uint32_t> label;
+  return groups.label_sets(label);
+}
+
+namespace {
+
+// The farthest vertex or face centre of `mesh` from the nearest of `points`.
+double farthest_from(const TriangleMesh& mesh, const std::vector<Point3>& points) {
+  const NearestIndex index(points);
+  double farthest = 0;
+  for (const auto& v : mesh.vertices) farthest = std::max(farthest, index.nearest(v).second);
+  for (const auto& t : mesh.triangles) {
+    const Point3 centre = CGAL::centroid(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    farthest = std::max(farthest, index.nearest(centre).second);
+  }
+  return farthest;
+}
+
+// The samples' gap size: the distance from 99% of them to their 8th nearest is at most this
+// (the quantile the automatic rho bridges, EnvelopeOptions::gap_quantile).
+double gap_size(const envelope::EnvelopeSamples& envelope) {
+  std::vector<double> rk = envelope.input_neighbour_distance;
+  if (rk.empty()) return 0;
+  const auto at = std::min(rk.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(rk.size())));
+  std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
+  return rk[at];
+}
+
+// The direct Power Crust of the samples, in place of a failed envelope run when it has fewer
+// defects (ReconstructOptions::use_power_crust_fallback).
+void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_defects,
+                          const envelope::SurfaceSamples& samples, const ReconstructOptions& options,
+                          SampleGroups& groups, const Progress& progress) {
+  ReconstructOptions direct = options;
+  direct.method = Method::PowerCrust;
+  direct.remesh.reset();
+  ReconstructResult crust = reconstruct_once(samples, direct, progress);
+  PowerCrustFallback fallback;
+  fallback.envelope = envelope_defects;
+  fallback.power_crust = defects_of(crust, samples, out.envelope, groups);
+  fallback.sample_groups = groups.count();
+  fallback.kept_power_crust = fallback.power_crust.is_better_than(fallback.envelope, options.max_genus);
+  if (fallback.kept_power_crust) {
+    fallback.crust_farthest_from_samples = farthest_from(crust.mesh, samples.points);
+    fallback.crust_allowed_distance = gap_size(out.envelope);
+    fallback.kept_power_crust = fallback.crust_farthest_from_samples <= fallback.crust_allowed_distance;
+  }
+  if (fallback.kept_power_crust) {
+    out.mesh = std::move(crust.mesh);
+    out.topology = std::move(crust.topology);
+    out.power_crust_stats = crust.power_crust_stats;
+    out.method = Method::PowerCrust;
+    out.warnings = std::move(crust.warnings);  // the envelope run's no longer describe the result
+  }
+  out.seconds.power_crust += crust.seconds.power_crust;
+  out.power_crust_fallback = fallback;
+}
+
+}  // namespace
+
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options, const Progress& progress) {
   ReconstructOptions once = options;
   once.remesh.reset();
   ReconstructResult out = reconstruct_once(samples, once, progress);
-  if (options.use_adaptive_retry && options.method == Method::Envelope && options.extraction == Extraction::Sheet &&
-      options.envelope.rho_mode == envelope::RhoMode::Uniform) {
+  out.method = options.method;
+  const bool is_sheet_run = options.method == Method::Envelope && options.extraction == Extraction::Sheet;
+  SampleGroups groups(samples, out.envelope.rho);
+  std::optional<RunDefects> kept;  // the checks of the kept envelope run, when made
+  if (options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
     AdaptiveRetry retry;
     retry.max_genus = options.max_genus;
-    retry.uniform = defects_of(out, samples);
+    retry.uniform = defects_of(out, samples, out.envelope, groups);
+    kept = retry.uniform;
     if (fails(retry.uniform, out.envelope, options.max_genus)) {
       once.envelope.rho_mode = envelope::RhoMode::Adaptive;
       ReconstructResult adaptive = reconstruct_once(samples, once, progress);
-      retry.adaptive = defects_of(adaptive, samples);
+      retry.adaptive = defects_of(adaptive, samples, adaptive.envelope, groups);
       retry.kept_adaptive = retry.adaptive.is_better_than(retry.uniform, options.max_genus);
       if (retry.kept_adaptive) {
         adaptive.seconds.envelope += out.seconds.envelope;
         adaptive.seconds.extraction += out.seconds.extraction;
+        adaptive.method = out.method;
         out = std::move(adaptive);
+        kept = retry.adaptive;
       }
       out.adaptive_retry = retry;
     }
   }
+  if (options.use_power_crust_fallback && is_sheet_run && (samples.boundary.empty() || options.are_curves_detected)) {
+    if (!kept) kept = defects_of(out, samples, out.envelope, groups);
+    // An input too sparse for its size (gaps of a tenth of its diagonal and more) does not
+    // tell its shape: the Power Crust of 80 points on the open cylinder is a closed tube.
+    // The Power Crust's closed result leaves every curve unfollowed: with as many curves as
+    // the envelope run has defects it cannot do better (a range scan's dozen holes).
+    if (fails(*kept, out.envelope, options.max_genus) && !out.envelope.is_input_too_sparse &&
+        samples.boundary.size() < kept->count(options.max_genus))
+      power_crust_fallback(out, *kept, samples, options, groups, progress);
+  }
   remesh_result(out, options.remesh, progress);
-  if (options.use_normal_orientation && options.method == Method::Envelope && options.extraction == Extraction::Sheet)
+  if (options.use_normal_orientation && out.method == Method::Envelope && is_sheet_run)
     topology::orient_along_normals(out.mesh, samples.points, samples.normals);
   return out;
 }

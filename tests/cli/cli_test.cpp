@@ -371,6 +371,40 @@ TEST_F(CliTest, reconstruct_of_an_input_too_sparse_for_its_size_says_so) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// 300 samples of the torus are too sparse for any envelope (the sheet falls apart: no
+// faces), but not for the direct Power Crust: with no boundary curve to keep, reconstruct
+// runs it too and keeps its torus, and says so. --no-power-crust-fallback keeps the
+// envelope's run, and the empty result is an error.
+TEST_F(CliTest, reconstruct_of_a_sparse_closed_sample_keeps_the_direct_power_crust) {
+  const auto j = run_envcrust_json("reconstruct builtin:torus -n 300 -o " + path("t.ply") + " --json");
+  ASSERT_TRUE(j.contains("power_crust_fallback")) << j;
+  const auto& f = j["power_crust_fallback"];
+  EXPECT_EQ(f["kept"], "power_crust");
+  EXPECT_EQ(f["envelope"]["empty"], true);
+  EXPECT_EQ(f["power_crust"]["genus"], 1);
+  EXPECT_EQ(f["sample_groups"], 1);
+  EXPECT_EQ(j["analysis"]["components"], 1);
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 0);
+  EXPECT_EQ(j["analysis"]["is_manifold"], true);
+  // Against the exact torus: about a sample spacing (0.23, 5.7% of the diagonal) at most.
+  EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.057);
+  EXPECT_TRUE(j["hints"].empty()) << j["hints"];
+
+  const auto text = run_envcrust("reconstruct builtin:torus -n 300 -o " + path("t2.ply"));
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("  the input has no boundary curve and the envelope's result has no faces (the samples "
+                          "form 1 set within 2 rho); the direct Power Crust's has genus 1 (1 defect), kept "
+                          "(--no-power-crust-fallback: keep the envelope's)\n"),
+            std::string::npos)
+      << text.out;
+
+  const auto r = run_envcrust("reconstruct builtin:torus -n 300 --no-power-crust-fallback -o " + path("x.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: builtin:torus: the reconstruction is empty", 0), 0u) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 // issue 5: rho too small for the sampling leaves holes everywhere; the error says which rho
 // or which input spacing would work, and the rho it names does work.
 TEST_F(CliTest, reconstruct_with_rho_below_the_gaps_says_which_rho_works) {
@@ -570,12 +604,21 @@ TEST_F(CliTest, reconstruct_a_torus_point_cloud_keeps_its_handle_with_a_hint) {
 }
 
 // A torus sampled too sparsely for estimated normals (400 points) falls into pieces although
-// its samples are one connected set within 2 rho: the hint says so and names the direct Power
-// Crust, which gets the torus. Two spheres apart come out as two pieces, as their samples
-// are: no hint.
+// its samples are one connected set within 2 rho: without the Power Crust fallback the hint
+// says so and names the direct Power Crust, which gets the torus; with it (the default) the
+// result is that torus. Two spheres apart come out as two pieces, as their samples are: no
+// hint.
 TEST_F(CliTest, a_result_in_more_pieces_than_its_samples_hints_at_the_direct_power_crust) {
   ASSERT_EQ(run_envcrust("sample torus -n 400 --seed 1 -q -o " + path("t.xyz")).exit_code, 0);
-  const auto j = run_envcrust_json("reconstruct " + path("t.xyz") + " -o " + path("t.ply") + " --json");
+  const auto fallback = run_envcrust_json("reconstruct " + path("t.xyz") + " -o " + path("f.ply") + " --json");
+  EXPECT_EQ(fallback["power_crust_fallback"]["kept"], "power_crust");
+  EXPECT_GT(fallback["power_crust_fallback"]["envelope"]["extra_pieces"].get<int>(), 0);
+  EXPECT_EQ(fallback["analysis"]["components"], 1);
+  EXPECT_EQ(fallback["analysis"]["euler_characteristic"], 0);
+  EXPECT_TRUE(fallback["hints"].empty()) << fallback["hints"];
+  const auto j = run_envcrust_json("reconstruct " + path("t.xyz") + " --no-power-crust-fallback -o " + path("t.ply") +
+                                   " --json");
+  EXPECT_FALSE(j.contains("power_crust_fallback"));
   const auto pieces = j["analysis"]["components"].get<int>();
   ASSERT_GT(pieces, 1);
   const double rho = j["envelope"]["rho"].get<double>();

@@ -209,4 +209,37 @@ TEST_F(CliTest, issue_4_power_crust_reproduces_the_original_programs_samples) {
   }
 }
 
+// The original program's samples through `reconstruct` with the defaults. The capsules come
+// out of the envelope (2 spheres). The knotted tube, about 15 samples around a tube of radius
+// 1 and 0.7 apart along it, is too sparse for any envelope (its gaps need rho 0.84, the tube
+// allows less than 1, and the estimated normals read a false boundary curve): the envelope's
+// result falls into 6 pieces where the samples hold together, so the direct Power Crust runs
+// too, keeps near the samples, and its torus is kept.
+TEST_F(CliTest, issue_5_closed_samples_too_sparse_for_the_envelope_get_the_power_crust) {
+  const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "powercrust_samples";
+  if (!std::filesystem::exists(folder / "knot.pts")) GTEST_SKIP() << "no " << folder;
+  const auto hotdogs = run_envcrust_json("reconstruct " + (folder / "hotdogs.pts").string() + " -o " +
+                                         path("hotdogs.ply") + " --json");
+  EXPECT_FALSE(hotdogs.contains("power_crust_fallback"));
+  EXPECT_EQ(hotdogs["analysis"]["components"], 2);
+  EXPECT_EQ(hotdogs["analysis"]["euler_characteristic"], 4);
+  EXPECT_LT(hotdogs["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.03);
+
+  const auto knot = run_envcrust_json("reconstruct " + (folder / "knot.pts").string() + " -o " + path("knot.ply") +
+                                      " --json");
+  ASSERT_TRUE(knot.contains("power_crust_fallback"));
+  const auto& f = knot["power_crust_fallback"];
+  EXPECT_EQ(f["kept"], "power_crust");
+  EXPECT_GT(f["envelope"]["extra_pieces"].get<int>(), 0);
+  EXPECT_EQ(f["power_crust"]["extra_pieces"], 0);
+  EXPECT_LE(f["crust_farthest_from_samples"].get<double>(), f["crust_allowed_distance"].get<double>());
+  const auto& a = knot["analysis"];
+  EXPECT_EQ(a["components"], 1);
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 0);
+  EXPECT_EQ(a["is_orientable"], true);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.03);
+  EXPECT_TRUE(knot["hints"].empty()) << knot["hints"];
+}
+
 }  // namespace
