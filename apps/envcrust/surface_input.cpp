@@ -63,7 +63,7 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
   try {
     out.samples.boundary = boundary::mesh_boundary_curves(mesh, vertex_normals);
   } catch (const InvalidInput& e) {
-    throw InvalidInput(spec + ": " + e.what());
+    throw InvalidInput(spec + ": " + e.what() + " (--as-points reads its vertices as a point file)");
   }
   const auto mesh_topology = topology::analyze_topology(mesh);  // a manifold, checked above
   out.kind.is_orientable = mesh_topology.is_orientable;
@@ -267,6 +267,9 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
                [&sampling](std::int64_t) { sampling.boundary.take_in_samples_beyond = true; },
                "Point files: bulge detected curves out past samples still beyond them (lone samples on the "
                "rim beside a void), instead of leaving those outside");
+  sub.add_flag("--as-points", sampling.mesh_as_points,
+               "Mesh files: read only the vertices its faces use, as a point file (normals estimated, boundary "
+               "detected, point-file options apply): for a mesh that is no surface (an edge with 3 faces)");
   sub.add_flag("--no-boundary-inlet-closing",
                [&sampling](std::int64_t) { sampling.boundary.close_narrow_inlets = false; },
                "Point files: keep the narrow inlets that voids beside the rim cut into detected curves");
@@ -314,6 +317,18 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
       mesh = mesh::triangulate_polygons(io::read_polygon_mesh(spec));
     } catch (const IoError&) {
     }
+  }
+  if (mesh && sampling.mesh_as_points) {
+    PointSet vertices;
+    std::vector<bool> used(mesh->vertices.size(), false);
+    for (const auto& t : mesh->triangles)
+      for (const Index v : t) used[v] = true;
+    for (std::size_t v = 0; v < used.size(); ++v)
+      if (used[v]) vertices.points.push_back(mesh->vertices[v]);
+    const std::size_t count = vertices.points.size();
+    load_point_samples(std::move(vertices), spec, sampling, progress, out);
+    out.notes.insert(out.notes.begin(), "the mesh's " + std::to_string(count) + " vertices read as a point file (--as-points)");
+    return out;
   }
   if (mesh) {
     if (!sampling.boundary_files.empty())

@@ -24,6 +24,9 @@ struct BuiltinSampling {
   /// builtin:NAME is sampled without its normals and boundary and then read as a point file
   /// is (normal lines by PCA, boundary detected): what `envcrust boundary` measures.
   bool builtin_as_points = false;
+  /// Mesh files: only the vertices the faces use, read as a point file is (normals estimated,
+  /// boundary detected): for meshes that are no surface (`--as-points`).
+  bool mesh_as_points = false;
   /// Point files: boundary points given instead of detected, from point files or closed
   /// `.polyline` curves (all files together).
   std::vector<std::string> boundary_files;

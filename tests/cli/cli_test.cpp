@@ -1087,7 +1087,40 @@ TEST_F(CliTest, reconstruct_refuses_a_non_manifold_mesh) {
   }
   const auto r = run_envcrust("reconstruct " + path("fin.off") + " -o " + path("x.ply"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "envcrust: error: " + path("fin.off") + ": edge (0, 1) has 3 faces: the mesh is not a surface\n");
+  EXPECT_EQ(r.err, "envcrust: error: " + path("fin.off") +
+                       ": edge (0, 1) has 3 faces: the mesh is not a surface (--as-points reads its vertices as a "
+                       "point file)\n");
+}
+
+// --as-points: a mesh that is no surface (an open cylinder's grid, 120 x 60, with a fin of
+// two more triangles on one of its edges) is read as its vertices, and comes out as the
+// cylinder.
+TEST_F(CliTest, reconstruct_as_points_reads_a_broken_meshs_vertices) {
+  {
+    envcrust::TriangleMesh mesh = envcrust::fixtures::open_cylinder(120, 60);
+    const auto edge = mesh.triangles[mesh.triangles.size() / 2];
+    for (const double lift : {0.001, 0.002}) {
+      const envcrust::Point3 a = mesh.vertices[edge[0]];
+      mesh.vertices.emplace_back(a.x() * (1 + lift), a.y() * (1 + lift), a.z() + lift);
+      mesh.triangles.push_back({edge[0], edge[1], static_cast<envcrust::Index>(mesh.vertices.size() - 1)});
+    }
+    envcrust::io::write_mesh(path("fin.off"), mesh);
+  }
+  const auto refused = run_envcrust("reconstruct " + path("fin.off") + " -o " + path("x.ply"));
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("faces: the mesh is not a surface (--as-points reads its vertices as a point file)"),
+            std::string::npos)
+      << refused.err;
+  const auto j = run_envcrust_json("reconstruct " + path("fin.off") + " --as-points -r builtin:cylinder -o " +
+                                   path("c.ply") + " --json");
+  EXPECT_EQ(j["source"], "points");
+  ASSERT_FALSE(j["notes"].empty());
+  EXPECT_EQ(j["notes"][0].get<std::string>().find("the mesh's "), 0u) << j["notes"];
+  EXPECT_NE(j["notes"][0].get<std::string>().find(" vertices read as a point file (--as-points)"), std::string::npos);
+  EXPECT_EQ(j["input_boundary_curves"], 2);
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 0);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 2);
+  EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 }
 
 // On a terminal (util-linux `script` gives the command one) the long stages draw a bar with
