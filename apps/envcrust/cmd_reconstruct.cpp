@@ -194,8 +194,11 @@ std::string describe(const pipeline::PowerCrustFallback& fallback, const std::op
                          : "the input has no boundary curve") +
          " and the envelope's result has " +
          describe(fallback.envelope, max_genus) + " (the samples form " + std::to_string(fallback.sample_groups) +
-         (fallback.sample_groups == 1 ? " set" : " sets") + " within 2 rho); the direct Power Crust's has " +
-         describe(fallback.power_crust, max_genus) + spans_holes + ", " +
+         (fallback.sample_groups == 1 ? " set" : " sets") + " within 2 rho); " +
+         (fallback.power_crust_failure.empty()
+              ? "the direct Power Crust's has " + describe(fallback.power_crust, max_genus) + spans_holes
+              : "the direct Power Crust failed (" + fallback.power_crust_failure + ")") +
+         ", " +
          (fallback.kept_power_crust ? "kept" : "not kept") + " (--no-power-crust-fallback: keep the envelope's)";
 }
 
@@ -289,6 +292,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
                                  {"power_crust", defects_json(f->power_crust, cmd.options.max_genus)},
                                  {"crust_farthest_from_samples", f->crust_farthest_from_samples},
                                  {"crust_allowed_distance", f->crust_allowed_distance},
+                                 {"power_crust_failure", f->power_crust_failure},
                                  {"kept", f->kept_power_crust ? "power_crust" : "envelope"}};
   }
   if (loaded.detection && !loaded.detection->loop_widths.empty())

@@ -134,6 +134,9 @@ struct PowerCrustFallback {
   /// sample, and the bound: the largest distance of 99% of the samples to their 8th nearest
   /// (the envelope's gap measure). Zero when the Power Crust had more defects (not measured).
   double crust_farthest_from_samples = 0, crust_allowed_distance = 0;
+  /// Why the Power Crust gave no result, if it threw (DegenerateInput on coplanar samples,
+  /// NumericalFailure); its run then counts as empty.
+  std::string power_crust_failure;
   bool kept_power_crust = false;
 };
 

@@ -1,6 +1,7 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
+#include "envcrust/errors.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
 #include "envcrust/union_find.h"
@@ -240,9 +241,16 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
   ReconstructOptions direct = options;
   direct.method = Method::PowerCrust;
   direct.remesh.reset();
-  ReconstructResult crust = reconstruct_once(samples, direct, progress);
   PowerCrustFallback fallback;
   fallback.envelope = envelope_defects;
+  ReconstructResult crust;
+  try {
+    crust = reconstruct_once(samples, direct, progress);
+  } catch (const DegenerateInput& e) {  // coplanar samples: no solid to bound
+    fallback.power_crust_failure = e.what();
+  } catch (const NumericalFailure& e) {
+    fallback.power_crust_failure = e.what();
+  }
   fallback.power_crust = defects_of(crust, samples, out.envelope, groups);
   fallback.sample_groups = groups.count();
   fallback.kept_power_crust = fallback.power_crust.is_better_than(fallback.envelope, options.max_genus);

@@ -145,6 +145,26 @@ TEST(PowerCrustFallback, ClosesAFalseDetectedCurve) {
   EXPECT_EQ(t.euler_characteristic, 0);
 }
 
+// A flat square sampled without its curve and with normal lines lying in its plane: the
+// envelope's offsets land on the square and its run is empty, which fails the check; the
+// direct Power Crust refuses coplanar samples, which counts as an empty run and is said.
+TEST(PowerCrustFallback, SurvivesAPowerCrustThatRefusesTheSamples) {
+  auto samples = fixtures::builtin_samples("square", 2000);
+  samples.boundary.clear();
+  for (auto& n : samples.normals) n = Vector3(1, 0, 0);
+  pipeline::ReconstructOptions options;
+  options.use_power_crust_fallback = true;
+  const auto result = pipeline::reconstruct(samples, options);
+  ASSERT_TRUE(result.power_crust_fallback.has_value());
+  const auto& fallback = *result.power_crust_fallback;
+  EXPECT_TRUE(fallback.envelope.is_empty);
+  EXPECT_TRUE(fallback.power_crust.is_empty);
+  EXPECT_EQ(fallback.power_crust_failure, "all 2000 points are coplanar: nothing to reconstruct");
+  EXPECT_FALSE(fallback.kept_power_crust);
+  EXPECT_EQ(result.method, pipeline::Method::Envelope);
+  EXPECT_TRUE(result.mesh.triangles.empty());
+}
+
 // options_for_input turns the fallback on with automatic rho, and trusts a mesh's curves.
 TEST(PowerCrustFallback, IsOnForInputsWithAutomaticRho) {
   pipeline::InputKind points;
