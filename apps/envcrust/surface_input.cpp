@@ -287,6 +287,8 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   LoadedSurface out;
   if (!sampling.boundary_files.empty() && is_parametric_spec(spec) && !sampling.builtin_as_points)
     throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
+  if (sampling.mesh_as_points && is_parametric_spec(spec))
+    throw UsageError("--as-points applies to mesh files: " + spec + " is sampled with its exact normals");
   if (is_parametric_spec(spec)) {
     // A NURBS patch is read as a built-in surface is (out.kind keeps is_builtin: no scan cuts).
     const auto surface = parametric_surface(spec);
@@ -336,6 +338,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     load_mesh_samples(std::move(*mesh), spec, out);
     return out;
   }
+  if (sampling.mesh_as_points) throw UsageError("--as-points applies to mesh files: " + spec + " has no faces");
   // A point file's steps before the envelope take seconds on a million points.
   progress.report("input: reading", 0.0);
   load_point_samples(io::read_points(spec), spec, sampling, progress, out);

@@ -1123,6 +1123,18 @@ TEST_F(CliTest, reconstruct_as_points_reads_a_broken_meshs_vertices) {
   EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 }
 
+TEST_F(CliTest, as_points_applies_to_mesh_files_only) {
+  ASSERT_EQ(run_envcrust("sample cylinder -n 2000 -q -o " + path("c.xyz")).exit_code, 0);
+  const auto points = run_envcrust("reconstruct " + path("c.xyz") + " --as-points -o " + path("x.ply"));
+  EXPECT_EQ(points.exit_code, 2);
+  EXPECT_EQ(points.err, "envcrust: usage error: --as-points applies to mesh files: " + path("c.xyz") + " has no faces\n");
+  const auto builtin = run_envcrust("reconstruct builtin:cylinder --as-points -o " + path("x.ply"));
+  EXPECT_EQ(builtin.exit_code, 2);
+  EXPECT_EQ(builtin.err,
+            "envcrust: usage error: --as-points applies to mesh files: builtin:cylinder is sampled with its exact normals\n");
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+}
+
 // On a terminal (util-linux `script` gives the command one) the long stages draw a bar with
 // the step under way: the point file's reading, normals and boundary detection, the envelope
 // and each step of the sheet; not when stderr is a file, nor with --quiet.
