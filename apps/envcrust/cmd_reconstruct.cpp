@@ -173,6 +173,8 @@ std::string describe(const pipeline::RunDefects& d, const std::optional<long>& m
   if (d.extra_loops > 0) out += ", " + count(d.extra_loops, " hole the input has not", " holes the input has not");
   if (d.missing_curves > 0) out += ", " + count(d.missing_curves, " input curve not followed", " input curves not followed");
   if (d.extra_pieces > 0) out += ", " + count(d.extra_pieces, " piece more than the samples form", " pieces more than the samples form");
+  if (d.uncovered_patches > 0)
+    out += ", " + count(d.uncovered_patches, " patch of samples left out", " patches of samples left out");
   return out + " (" + count(d.count(max_genus), " defect", " defects") + ")";
 }
 
@@ -208,6 +210,7 @@ nlohmann::json defects_json(const pipeline::RunDefects& d, const std::optional<l
           {"extra_loops", d.extra_loops},
           {"missing_curves", d.missing_curves},
           {"extra_pieces", d.extra_pieces},
+          {"uncovered_patches", d.uncovered_patches},
           {"defects", d.genus ? nlohmann::json(d.count(max_genus)) : nlohmann::json(nullptr)}};
 }
 

@@ -53,7 +53,8 @@ struct ReconstructOptions {
   /// When the input has no boundary curves (a closed surface), or only curves detected from its
   /// points (are_curves_detected), and the envelope's result, after the adaptive retry if that
   /// ran, fails the same check (empty, no manifold, more pieces than the samples form, handles
-  /// while rho was raised for gaps), run the direct Power Crust too and keep its result if it
+  /// while rho was raised for gaps) or leaves a patch of samples out (RunDefects::
+  /// uncovered_patches), run the direct Power Crust too and keep its result if it
   /// has fewer defects (each input curve it closes counts as one; ReconstructResult::
   /// power_crust_fallback) and spans no hole (stays within the samples' gap size of them). A closed sample too sparse for the envelope (its gaps need a rho
   /// beyond the reach) is the Power Crust's home ground: it needs no normals and no rho, and
@@ -109,7 +110,11 @@ struct RunDefects {
   /// Pieces of the result beyond the sets the samples form (sample_groups within 2 rho, where
   /// the envelope's balls overlap): the result fell apart where the samples hold together.
   std::size_t extra_pieces = 0;
-  /// missing_curves + extra_loops + extra_pieces + the handles and cross-caps beyond max_genus (all of them
+  /// Patches of the samples (sets within 2 rho, of at least kMinUncoveredPatch samples) all
+  /// farther than 2 rho from the result: parts of the sample the result left out (an ear cut
+  /// off). Measured for the Power Crust fallback's two runs only (0 elsewhere).
+  std::size_t uncovered_patches = 0;
+  /// missing_curves + extra_loops + extra_pieces + uncovered_patches + the handles and cross-caps beyond max_genus (all of them
   /// when it is unknown); the largest value for no manifold.
   [[nodiscard]] std::size_t count(std::optional<long> max_genus) const;
   /// Fewer defects than `other`, or as many with fewer handles and cross-caps beyond
@@ -124,6 +129,10 @@ struct AdaptiveRetry {
   RunDefects uniform, adaptive;
   bool kept_adaptive = false;
 };
+
+/// Fewer samples than this far from the result are strays, not a part left out
+/// (RunDefects::uncovered_patches): the 8 nearest neighbours of one sample.
+inline constexpr std::size_t kMinUncoveredPatch = 9;
 
 /// What the Power Crust fallback did (ReconstructOptions::use_power_crust_fallback).
 struct PowerCrustFallback {
@@ -186,6 +195,11 @@ analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& resu
 /// reach / 2 around them, so an envelope of radius rho around them has at least as many
 /// pieces as they form within 2 rho, and a result of more pieces fell apart.
 std::size_t sample_groups(const std::vector<Point3>& points, double reach);
+
+/// Patches of at least kMinUncoveredPatch samples (sets joined within 2 rho as in
+/// sample_groups) lying farther than 2 rho from `mesh`: parts of the sample a result left out
+/// (RunDefects::uncovered_patches). 0 for an empty mesh or rho <= 0.
+std::size_t uncovered_patches(const TriangleMesh& mesh, const std::vector<Point3>& points, double rho);
 
 /// The power shape's triangles as a mesh whose vertices are the In poles, in pole order (the
 /// paper's output; the power shape holds only In poles).

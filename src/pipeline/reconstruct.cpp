@@ -1,6 +1,7 @@
 // reconstruct: composes envelope sampling, the Power Crust and the sheet extraction.
 #include "envcrust/pipeline.h"
 
+#include "envcrust/distance.h"
 #include "envcrust/errors.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
@@ -177,7 +178,8 @@ long excess_genus(long genus, std::optional<long> max_genus) { return std::max(0
 
 std::size_t RunDefects::count(std::optional<long> max_genus) const {
   if (!genus) return std::numeric_limits<std::size_t>::max();
-  return missing_curves + extra_loops + extra_pieces + static_cast<std::size_t>(excess_genus(*genus, max_genus));
+  return missing_curves + extra_loops + extra_pieces + uncovered_patches +
+         static_cast<std::size_t>(excess_genus(*genus, max_genus));
 }
 
 bool RunDefects::is_better_than(const RunDefects& other, std::optional<long> max_genus) const {
@@ -207,6 +209,26 @@ std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
       if (d <= reach) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
   std::vector<std::uint32_t> label;
   return groups.label_sets(label);
+}
+
+std::size_t uncovered_patches(const TriangleMesh& mesh, const std::vector<Point3>& points, double rho) {
+  const std::vector<double> d = distance::distances_to_mesh(points, mesh);
+  if (d.empty() || !(rho > 0)) return 0;
+  std::vector<Point3> far;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (d[i] > 2.0 * rho) far.push_back(points[i]);
+  if (far.size() < kMinUncoveredPatch) return 0;
+  const NearestIndex index(far);
+  topology::UnionFind groups(far.size());
+  const auto k = static_cast<unsigned>(std::min<std::size_t>(9, far.size()));
+  for (std::size_t i = 0; i < far.size(); ++i)
+    for (const auto& [j, dist] : index.nearest(far[i], k))
+      if (dist <= 2.0 * rho) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
+  std::vector<std::uint32_t> label;
+  const std::size_t sets = groups.label_sets(label);
+  std::vector<std::size_t> size(sets, 0);
+  for (const auto l : label) ++size[l];
+  return static_cast<std::size_t>(std::count_if(size.begin(), size.end(), [](std::size_t n) { return n >= kMinUncoveredPatch; }));
 }
 
 namespace {
@@ -252,6 +274,7 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
     fallback.power_crust_failure = e.what();
   }
   fallback.power_crust = defects_of(crust, samples, out.envelope, groups);
+  fallback.power_crust.uncovered_patches = uncovered_patches(crust.mesh, samples.points, out.envelope.rho);
   fallback.sample_groups = groups.count();
   fallback.kept_power_crust = fallback.power_crust.is_better_than(fallback.envelope, options.max_genus);
   if (fallback.kept_power_crust) {
@@ -303,11 +326,13 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   }
   if (options.use_power_crust_fallback && is_sheet_run && (samples.boundary.empty() || options.are_curves_detected)) {
     if (!kept) kept = defects_of(out, samples, out.envelope, groups);
+    kept->uncovered_patches = uncovered_patches(out.mesh, samples.points, out.envelope.rho);
     // An input too sparse for its size (gaps of a tenth of its diagonal and more) does not
     // tell its shape: the Power Crust of 80 points on the open cylinder is a closed tube.
     // The Power Crust's closed result leaves every curve unfollowed: with as many curves as
     // the envelope run has defects it cannot do better (a range scan's dozen holes).
-    if (fails(*kept, out.envelope, options.max_genus) && !out.envelope.is_input_too_sparse &&
+    if ((fails(*kept, out.envelope, options.max_genus) || kept->uncovered_patches > 0) &&
+        !out.envelope.is_input_too_sparse &&
         samples.boundary.size() < kept->count(options.max_genus))
       power_crust_fallback(out, *kept, samples, options, groups, progress);
   }

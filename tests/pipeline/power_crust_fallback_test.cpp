@@ -1,6 +1,7 @@
 // Tests of reconstruct's Power Crust fallback: when the envelope's result of an input without
 // trusted boundary curves fails its check, the direct Power Crust runs too and the result with
 // fewer defects is kept.
+#include "fixtures/shapes.h"
 #include "fixtures/surface_samples.h"
 
 #include "envcrust/pipeline.h"
@@ -32,12 +33,30 @@ TEST(SampleGroups, CountsSetsJoinedByNeighboursWithinTheReach) {
   EXPECT_EQ(pipeline::sample_groups({}, 1.0), 0u);
 }
 
+// A unit square mesh and samples of it, plus a patch of 20 samples 0.5 above it and 3 strays
+// 0.5 below: with rho 0.05 the patch is left out (the strays are too few to count); with rho
+// 0.3 (2 rho = 0.6) everything is near the square.
+TEST(UncoveredPatches, CountsPartsOfTheSampleFarFromTheResult) {
+  const TriangleMesh square = fixtures::square(10);
+  std::vector<Point3> points;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j) points.emplace_back(0.05 * i, 0.05 * j, 0.0);
+  for (int i = 0; i < 20; ++i) points.emplace_back(0.5 + 0.01 * (i % 5), 0.5 + 0.01 * (i / 5), 0.5);
+  for (int i = 0; i < 3; ++i) points.emplace_back(0.2 + 0.01 * i, 0.2, -0.5);
+  EXPECT_EQ(pipeline::uncovered_patches(square, points, 0.05), 1u);
+  EXPECT_EQ(pipeline::uncovered_patches(square, points, 0.3), 0u);
+  EXPECT_EQ(pipeline::uncovered_patches(TriangleMesh{}, points, 0.05), 0u);
+}
+
 TEST(RunDefects, PiecesBeyondTheSampleGroupsAreDefects) {
   pipeline::RunDefects d;
   d.genus = 0;
   d.missing_curves = 1;
   d.extra_pieces = 5;
   EXPECT_EQ(d.count(std::nullopt), 6u);
+  d.uncovered_patches = 2;
+  EXPECT_EQ(d.count(std::nullopt), 8u);
+  d.uncovered_patches = 0;
   pipeline::RunDefects closed;  // the Power Crust of the same samples: one curve closed, a handle
   closed.genus = 1;
   closed.missing_curves = 1;
