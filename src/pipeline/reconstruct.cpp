@@ -199,7 +199,12 @@ analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& resu
   return analysis::check_boundary(result, curves, 2.0 * envelope.rho, 0.9, 2.0 * std::numbers::pi * rho_min);
 }
 
-std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
+namespace {
+
+// The set of each point (label, from 0) when each is joined to those of its 8 nearest that lie
+// within `reach`; returns the number of sets.
+std::size_t label_groups(const std::vector<Point3>& points, double reach, std::vector<std::uint32_t>& label) {
+  label.clear();
   if (points.empty()) return 0;
   const NearestIndex index(points);
   topology::UnionFind groups(points.size());
@@ -207,8 +212,14 @@ std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
   for (std::size_t i = 0; i < points.size(); ++i)
     for (const auto& [j, d] : index.nearest(points[i], k))
       if (d <= reach) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
-  std::vector<std::uint32_t> label;
   return groups.label_sets(label);
+}
+
+}  // namespace
+
+std::size_t sample_groups(const std::vector<Point3>& points, double reach) {
+  std::vector<std::uint32_t> label;
+  return label_groups(points, reach, label);
 }
 
 std::size_t uncovered_patches(const TriangleMesh& mesh, const std::vector<Point3>& points, double rho) {
@@ -218,17 +229,11 @@ std::size_t uncovered_patches(const TriangleMesh& mesh, const std::vector<Point3
   for (std::size_t i = 0; i < points.size(); ++i)
     if (d[i] > 2.0 * rho) far.push_back(points[i]);
   if (far.size() < kMinUncoveredPatch) return 0;
-  const NearestIndex index(far);
-  topology::UnionFind groups(far.size());
-  const auto k = static_cast<unsigned>(std::min<std::size_t>(9, far.size()));
-  for (std::size_t i = 0; i < far.size(); ++i)
-    for (const auto& [j, dist] : index.nearest(far[i], k))
-      if (dist <= 2.0 * rho) groups.unite(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
   std::vector<std::uint32_t> label;
-  const std::size_t sets = groups.label_sets(label);
-  std::vector<std::size_t> size(sets, 0);
+  std::vector<std::size_t> size(label_groups(far, 2.0 * rho, label), 0);
   for (const auto l : label) ++size[l];
-  return static_cast<std::size_t>(std::count_if(size.begin(), size.end(), [](std::size_t n) { return n >= kMinUncoveredPatch; }));
+  return static_cast<std::size_t>(
+      std::count_if(size.begin(), size.end(), [](std::size_t n) { return n >= kMinUncoveredPatch; }));
 }
 
 namespace {
