@@ -191,9 +191,8 @@ std::string describe(const pipeline::PowerCrustFallback& fallback, const std::op
     spans << std::setprecision(4) << " and reaches " << fallback.crust_farthest_from_samples
           << " from the samples, beyond their gaps (" << fallback.crust_allowed_distance << "): it caps holes";
   const std::string spans_holes = spans.str();
-  return std::string(fallback.envelope.missing_curves + fallback.envelope.extra_loops > 0 || fallback.power_crust.missing_curves > 0
-                         ? "the input's curves were detected (maybe false ones)"
-                         : "the input has no boundary curve") +
+  return std::string(fallback.input_curves > 0 ? "the input's curves were detected (maybe false ones)"
+                                               : "the input has no boundary curve") +
          " and the envelope's result has " +
          describe(fallback.envelope, max_genus) + " (the samples form " + std::to_string(fallback.sample_groups) +
          (fallback.sample_groups == 1 ? " set" : " sets") + " within 2 rho); " +
@@ -584,9 +583,10 @@ void register_reconstruct(CLI::App& app) {
                 "a mesh input (by default the reconstruction then runs again with --rho-adaptive and keeps the "
                 "run with fewer defects)");
   sub->add_flag("--no-power-crust-fallback", cmd->no_power_crust_fallback,
-                "Keep the envelope's result of an input without boundary curves even when it falls apart (by "
-                "default the direct Power Crust, which needs no normals and copes with sparser samples of a closed "
-                "surface, then runs too and the result with fewer defects is kept)");
+                "Keep the envelope's result of an input without boundary curves (or with detected ones) even when "
+                "it fails its checks (by default the direct Power Crust, which needs no normals and copes with "
+                "sparser samples of a closed surface, then runs too and is kept if it has fewer defects and caps "
+                "no hole)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_reconstruct(*cmd); });

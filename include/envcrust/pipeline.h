@@ -136,6 +136,7 @@ inline constexpr std::size_t kMinUncoveredPatch = 9;
 
 /// What the Power Crust fallback did (ReconstructOptions::use_power_crust_fallback).
 struct PowerCrustFallback {
+  std::size_t input_curves = 0;    ///< the input's boundary curves (detected ones: may be false)
   std::size_t sample_groups = 0;   ///< sets the samples form within 2 rho
   RunDefects envelope, power_crust;
   /// The Power Crust's result must stay near the samples: a cap across a hole does not (the

@@ -269,6 +269,7 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
   direct.method = Method::PowerCrust;
   direct.remesh.reset();
   PowerCrustFallback fallback;
+  fallback.input_curves = samples.boundary.size();
   fallback.envelope = envelope_defects;
   ReconstructResult crust;
   try {
