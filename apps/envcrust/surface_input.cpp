@@ -34,17 +34,19 @@ constexpr double kTearingBendDeg = 80.0;
 // right; the lion head 70%, an open box 462%).
 constexpr double kCreaseMinLengthRelDiag = 0.1;
 
-// The warning a mesh with long sharp creases gets, if any.
-std::optional<std::string> crease_warning(const TriangleMesh& mesh) {
-  const auto sharp = mesh::sharp_edges(mesh, kTearingBendDeg);
+// A mesh's sharp creases, as the samples carry them (SurfaceSamples::creases), and a note
+// that says where they are.
+void add_creases(const TriangleMesh& mesh, LoadedSurface& out) {
+  auto sharp = mesh::sharp_edges(mesh, kTearingBendDeg);
   const double diagonal = mesh::bbox_diagonal(mesh.vertices);
-  if (sharp.count == 0 || !(sharp.total_length > kCreaseMinLengthRelDiag * diagonal)) return std::nullopt;
+  if (sharp.count == 0 || !(sharp.total_length > kCreaseMinLengthRelDiag * diagonal)) return;
   std::ostringstream w;
   w << std::setprecision(3) << "the mesh bends by more than " << kTearingBendDeg << " degrees across " << sharp.count
     << " edges (" << sharp.total_length << " long in all, up to " << sharp.max_bend_deg << " degrees near ("
     << sharp.sharpest->x() << ", " << sharp.sharpest->y() << ", " << sharp.sharpest->z()
-    << ")): the envelope method tears the result apart or closes it along such creases";
-  return w.str();
+    << ")): creases, left out of the reach estimate and joined across by the sheet";
+  out.notes.push_back(w.str());
+  out.samples.creases = std::move(sharp.segments);
 }
 
 // Vertices with their area-weighted normal lines, plus face centres with face normals (the
@@ -89,7 +91,7 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
   if (out.samples.points.empty()) throw InvalidInput(spec + ": the mesh has no face of positive area");
   out.notes.push_back("mesh vertices and face centres; " + std::to_string(out.samples.boundary.size()) +
                       " border loops");
-  if (auto w = crease_warning(mesh)) out.warnings.push_back(std::move(*w));
+  add_creases(mesh, out);
 }
 
 // The points of every --boundary file: a point file, or a closed curve (.polyline). Their

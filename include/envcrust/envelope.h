@@ -4,7 +4,9 @@
 
 #include "envcrust/types.h"
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +18,34 @@ struct SurfaceSamples {
   std::vector<Point3> points;
   std::vector<Vector3> normals;        ///< one unit normal line per point
   std::vector<BoundaryCurve> boundary; ///< closed boundary loops with frames (t, n, c)
+  /// Sharp creases of M (a mesh's edges bent by more than 80 degrees), as segments; empty
+  /// for a smooth M. M has no reach there: the reach estimates leave out the pairs that may
+  /// span a crease, and the sheet is joined across them (SheetOptions::crease_fold_min_angle_deg).
+  std::vector<std::array<Point3, 2>> creases;
+};
+
+/// Envelope samples generated within this many rho of a crease: on the concave side the
+/// offsets of the two sides meet there (candidates closer than rho to M are expected, not a
+/// fold of the envelope), and samples either side of M make less than the sheet's angle
+/// (extract::SheetOptions::crease_fold_reach_rel_rho). A crease bent by b moves the samples
+/// of a generator up to rho / tan((180 - b) / 2) from it closer than rho to the other side:
+/// 2 rho covers bends up to 127 degrees.
+inline constexpr double kCreaseReachRelRho = 2.0;
+
+/// Distance from a point to the nearest crease segment (a CGAL AABB tree); infinite when
+/// there are none. Built eagerly: queries are safe from several threads at once.
+class CreaseDistance {
+ public:
+  explicit CreaseDistance(const std::vector<std::array<Point3, 2>>& creases);
+  ~CreaseDistance();
+  CreaseDistance(const CreaseDistance&) = delete;
+  CreaseDistance& operator=(const CreaseDistance&) = delete;
+  [[nodiscard]] bool empty() const { return tree_ == nullptr; }
+  [[nodiscard]] double operator()(const Point3& p) const;
+
+ private:
+  struct Tree;
+  std::unique_ptr<Tree> tree_;
 };
 
 /// Estimate of the reach R of M (distance from M to its medial axis) by Federer's formula

@@ -30,6 +30,11 @@ struct SheetOptions {
   /// 0 disables; below min_angle_deg.
   double fold_min_angle_deg = 0.0;
   double fold_clearance_rel_rho = 0.25;
+  /// The same test where M has creases (SurfaceSamples::creases: a mesh bent by more than 80
+  /// degrees along its edges), for the pairs whose generator lies within
+  /// crease_fold_reach_rel_rho rho of one. 0 disables; below min_angle_deg.
+  double crease_fold_min_angle_deg = 60.0;
+  double crease_fold_reach_rel_rho = envelope::kCreaseReachRelRho;
   /// A component of the sheet is kept when the median distance of its vertices to the surface
   /// samples is below this fraction of rho (the outer medial axis of E lies >= R - rho away).
   double max_component_distance_rel_rho = 0.5;

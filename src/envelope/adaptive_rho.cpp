@@ -60,16 +60,20 @@ std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const Lo
   Tree tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(map));
   tree.build();
   const double min_pair2 = options.min_pair_distance * options.min_pair_distance;
+  const CreaseDistance creases(samples.creases);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const auto& range) {
     std::vector<std::size_t> hits;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      // Pairs that may span a crease read the crease, not the reach (as in estimate_reach).
+      const double crease = creases(pts[i]);
+      const double max_pair2 = crease * crease;
       const Vector3 normal = samples.normals[i] / std::sqrt(samples.normals[i].squared_length());
       hits.clear();
       tree.search(std::back_inserter(hits), Sphere(pts[i], options.search_radius, 0.0, Traits(map)));
       for (std::size_t j : hits) {
         const Vector3 v = pts[j] - pts[i];
         const double len2 = v.squared_length();
-        if (len2 == 0.0) continue;
+        if (len2 == 0.0 || len2 >= max_pair2) continue;
         const double along = std::abs(v * normal);
         if (len2 < min_pair2 && along < options.crossing_min_cos * std::sqrt(len2)) continue;
         if (along <= 0.0) continue;

@@ -19,6 +19,8 @@ struct FramedPoint {
   Vector3 n;
   Vector3 c;          // outward conormal at boundary points, zero elsewhere
   bool is_boundary = false;
+  // Distance to the nearest crease of M: a pair at least this long may span one.
+  double crease_distance = std::numeric_limits<double>::infinity();
 };
 
 // dist(v, Tan_p): to the tangent plane, or at a boundary point to the half-plane spanned by t
@@ -30,7 +32,8 @@ double distance_to_tangent(const FramedPoint& a, const Vector3& v) {
   return std::sqrt(normal * normal + outward * outward);
 }
 
-std::vector<FramedPoint> framed_subsample(const SurfaceSamples& s, const ReachOptions& o) {
+std::vector<FramedPoint> framed_subsample(const SurfaceSamples& s, const ReachOptions& o,
+                                          const CreaseDistance& creases) {
   std::vector<std::size_t> order(s.points.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::mt19937_64 rng(o.seed);
@@ -59,6 +62,9 @@ std::vector<FramedPoint> framed_subsample(const SurfaceSamples& s, const ReachOp
       }
     }
   }
+  if (!creases.empty()) {
+    tbb::parallel_for(std::size_t{0}, out.size(), [&](std::size_t i) { out[i].crease_distance = creases(out[i].p); });
+  }
   return out;
 }
 
@@ -75,7 +81,8 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
   if (!(options.quantile >= 0.0 && options.quantile < 1.0))
     throw InvalidOptions("ReachOptions::quantile must be in [0, 1) (got " +
                          std::to_string(options.quantile) + ")");
-  const auto pts = framed_subsample(samples, options);
+  const CreaseDistance creases(samples.creases);
+  const auto pts = framed_subsample(samples, options, creases);
   const std::size_t n = pts.size();
   // Per point: the smallest Federer value over its pairs, split by pair length so that the
   // report can say whether curvature or a bottleneck limits the reach.
@@ -90,6 +97,11 @@ ReachEstimate estimate_reach(const SurfaceSamples& samples, const ReachOptions& 
         const Vector3 v = pts[j].p - pts[i].p;
         const double len2 = v.squared_length();
         if (len2 == 0.0 || len2 < min_pair2) continue;
+        // A pair that may span a crease reads the crease (no reach), not M's curvature or a
+        // bottleneck: a point at distance e from a right-angled crease and one on the other
+        // side read e at best. A bottleneck narrower than a point's distance to the creases
+        // is still seen from there.
+        if (len2 >= pts[i].crease_distance * pts[i].crease_distance) continue;
         const double d = distance_to_tangent(pts[i], v);
         if (d <= 0.0) continue;
         const double value = len2 / (2.0 * d);

@@ -224,6 +224,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   };
   std::vector<char> keep(candidates.size(), 1);
   std::vector<char> folds(candidates.size(), 0);
+  const CreaseDistance creases(surface.creases);
   const double noise_allowance = 3.0 * out.noise;
   const bool is_adaptive = options.rho_mode == RhoMode::Adaptive;
   // Queried along a Hilbert curve of the candidates (each test is independent of the order;
@@ -243,7 +244,8 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                                ? std::sqrt(CGAL::squared_distance(candidates[i].position, candidates[i].generator))
                                : out.rho;
       if (d < clearance * rho_i) keep[i] = 0;
-      folds[i] = candidates[i].part == EnvelopePart::Sheet && d < clearance * rho_i - noise_allowance;
+      folds[i] = candidates[i].part == EnvelopePart::Sheet && d < clearance * rho_i - noise_allowance &&
+                 !(creases(candidates[i].generator) <= kCreaseReachRelRho * rho_i);
     }
   });
   std::size_t sheet_total = 0, sheet_folded = 0;

@@ -43,6 +43,9 @@ void validate(const SheetOptions& o) {
   if (!(o.fold_min_angle_deg >= 0 && o.fold_min_angle_deg < o.min_angle_deg))
     fail("fold_min_angle_deg", o.fold_min_angle_deg);
   if (!(o.fold_clearance_rel_rho > 0)) fail("fold_clearance_rel_rho", o.fold_clearance_rel_rho);
+  if (!(o.crease_fold_min_angle_deg >= 0 && o.crease_fold_min_angle_deg < o.min_angle_deg))
+    fail("crease_fold_min_angle_deg", o.crease_fold_min_angle_deg);
+  if (!(o.crease_fold_reach_rel_rho >= 0)) fail("crease_fold_reach_rel_rho", o.crease_fold_reach_rel_rho);
   if (!(o.max_component_distance_rel_rho > 0)) fail("max_component_distance_rel_rho", o.max_component_distance_rel_rho);
   if (!(o.max_component_distance_rel_spacing >= 0))
     fail("max_component_distance_rel_spacing", o.max_component_distance_rel_spacing);
@@ -121,8 +124,12 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   // Each step is announced with the share of the stage done before it (the steps' shares of
   // the bunny's extraction time).
   progress.report("sheet: Voronoi polygons", 0.0);
-  const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg, options.fold_min_angle_deg,
-                                     options.fold_clearance_rel_rho);
+  const RawSheet raw = voronoi_sheet(envelope, options.min_angle_deg,
+                                     FoldPairs{.min_angle_deg = options.fold_min_angle_deg,
+                                               .crease_min_angle_deg = options.crease_fold_min_angle_deg,
+                                               .crease_reach_rel_rho = options.crease_fold_reach_rel_rho,
+                                               .clearance_rel_rho = options.fold_clearance_rel_rho,
+                                               .creases = &surface.creases});
   result.stats.delaunay_edges = raw.delaunay_edges;
   result.stats.crossing_edges = raw.crossing_edges;
   result.stats.polygons = raw.polygons.size();

@@ -11,6 +11,7 @@
 #include <CGAL/property_map.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <limits>
@@ -34,8 +35,7 @@ constexpr Index kUnused = std::numeric_limits<Index>::max();
 
 }  // namespace
 
-RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg, double fold_min_angle_deg,
-                       double fold_clearance_rel_rho) {
+RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg, const FoldPairs& folds) {
   const auto& samples = envelope.samples;
   if (samples.size() < 5) throw DegenerateInput("envelope has fewer than 5 samples");
   // Insert along a Hilbert curve, each point located from the previous one (what the range
@@ -77,9 +77,20 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
 
   const double max_dot = std::cos(min_angle_deg * std::numbers::pi / 180.0);
   // Fold pairs: a segment that passes through M where its two halves meet at a sharp angle
-  // (points along it checked against the generators, which sample M).
-  const bool use_folds = fold_min_angle_deg > 0 && fold_min_angle_deg < min_angle_deg;
-  const double max_fold_dot = std::cos(fold_min_angle_deg * std::numbers::pi / 180.0);
+  // (points along it checked against the generators, which sample M). Per sample, the
+  // largest u_p . u_q its fold pairs may have (-2: none).
+  auto fold_dot = [](double angle_deg) { return angle_deg > 0 ? std::cos(angle_deg * std::numbers::pi / 180.0) : -2.0; };
+  std::vector<double> max_fold_dot(samples.size(), fold_dot(folds.min_angle_deg));
+  if (folds.creases && !folds.creases->empty() && folds.crease_min_angle_deg > 0) {
+    const envelope::CreaseDistance creases(*folds.creases);
+    const double crease_dot = fold_dot(folds.crease_min_angle_deg);
+    tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
+      const double rho = std::sqrt(CGAL::squared_distance(samples[i].position, samples[i].generator));
+      if (creases(samples[i].generator) <= folds.crease_reach_rel_rho * rho)
+        max_fold_dot[i] = std::max(max_fold_dot[i], crease_dot);
+    });
+  }
+  const bool use_folds = std::any_of(max_fold_dot.begin(), max_fold_dot.end(), [](double d) { return d > -2.0; });
   std::vector<Point3> generators;
   if (use_folds) {
     generators.reserve(samples.size());
@@ -87,14 +98,15 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
   }
   const std::optional<NearestIndex> generator_index =
       use_folds ? std::optional<NearestIndex>(std::in_place, generators) : std::nullopt;
-  auto crosses_m = [&](Index p, Index q) {
+  auto is_fold_pair = [&](Index p, Index q, double dot) {
+    if (!use_folds || dot > std::max(max_fold_dot[p], max_fold_dot[q])) return false;
     const double rho = std::sqrt(std::min(CGAL::squared_distance(samples[p].position, samples[p].generator),
                                           CGAL::squared_distance(samples[q].position, samples[q].generator)));
     constexpr int kSteps = 16;
     for (int k = 1; k < kSteps; ++k) {
       const double t = static_cast<double>(k) / kSteps;
       const Point3 x = samples[p].position + t * (samples[q].position - samples[p].position);
-      if (generator_index->any_within(x, fold_clearance_rel_rho * rho)) return true;
+      if (generator_index->any_within(x, folds.clearance_rel_rho * rho)) return true;
     }
     return false;
   };
@@ -111,7 +123,7 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     const Index p = cell->vertex(e->second)->info();
     const Index q = cell->vertex(e->third)->info();
     const double dot = samples[p].direction * samples[q].direction;
-    if (dot > max_dot && !(use_folds && dot <= max_fold_dot && crosses_m(p, q))) continue;
+    if (dot > max_dot && !is_fold_pair(p, q, dot)) continue;
     ++sheet.crossing_edges;
     CrossingEdge edge{std::minmax(p, q), {}, dot};
     bool bounded = true;

@@ -4,6 +4,7 @@
 
 #include "envcrust/envelope.h"
 
+#include <array>
 #include <vector>
 
 namespace envcrust::extract {
@@ -16,14 +17,22 @@ struct RawSheet {
   std::size_t crossing_edges = 0;
 };
 
+/// Which edges below `min_angle_deg` are also taken: those whose directions make at least a
+/// fold angle and whose segment pq passes within `clearance_rel_rho` rho of a generator (a
+/// point of M), so that it crosses M at a sharp fold.
+struct FoldPairs {
+  double min_angle_deg = 0.0;         ///< everywhere; 0 disables
+  double crease_min_angle_deg = 0.0;  ///< for pairs with a generator near `creases`; 0 disables
+  double crease_reach_rel_rho = 2.0;  ///< "near": within this many rho of a crease segment
+  double clearance_rel_rho = 0.25;
+  const std::vector<std::array<Point3, 2>>* creases = nullptr;
+};
+
 /// Build the Delaunay triangulation of the envelope samples and collect the dual polygons of
-/// the edges whose offset directions make at least `min_angle_deg`. A cell's vertex is the
-/// mean of the midpoints of its selected edges: the midpoint of a crossing edge lies on M to
-/// first order, while circumcentres of slivers are thrown far off (METHOD.md §5 c1 probe).
-/// An edge whose directions make less than `min_angle_deg` but at least `fold_min_angle_deg`
-/// is also taken when the segment pq passes within `fold_clearance_rel_rho` rho of a
-/// generator (a point of M): it crosses M at a sharp fold (0 disables).
-RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg,
-                       double fold_min_angle_deg = 0.0, double fold_clearance_rel_rho = 0.25);
+/// the edges whose offset directions make at least `min_angle_deg`, and the fold pairs. A
+/// cell's vertex is the mean of the midpoints of its selected edges: the midpoint of a
+/// crossing edge lies on M to first order, while circumcentres of slivers are thrown far off
+/// (METHOD.md §5 c1 probe).
+RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg, const FoldPairs& folds = {});
 
 }  // namespace envcrust::extract

@@ -49,6 +49,7 @@ SharpEdges sharp_edges(const TriangleMesh& input, double min_bend_deg) {
       if (cos_bend < cos_threshold) {
         const Point3 &a = mesh.vertices[e.lo], &b = mesh.vertices[e.hi];
         ++out.count;
+        out.segments.push_back({a, b});
         out.total_length += std::sqrt(CGAL::squared_distance(a, b));
         if (cos_bend < min_cos) out.sharpest = CGAL::midpoint(a, b);
       }

@@ -1,0 +1,39 @@
+// Distance to the creases of M: a CGAL AABB tree over their segments.
+#include "envcrust/envelope.h"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+
+#include <cmath>
+#include <limits>
+
+namespace envcrust::envelope {
+
+struct CreaseDistance::Tree {
+  using Segment = Kernel::Segment_3;
+  using Primitive = CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator>;
+  using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  std::vector<Segment> segments;
+  AabbTree tree;
+};
+
+CreaseDistance::CreaseDistance(const std::vector<std::array<Point3, 2>>& creases) {
+  auto tree = std::make_unique<Tree>();
+  for (const auto& [a, b] : creases)
+    if (a != b) tree->segments.emplace_back(a, b);
+  if (tree->segments.empty()) return;
+  tree->tree.insert(tree->segments.cbegin(), tree->segments.cend());
+  tree->tree.build();
+  tree->tree.accelerate_distance_queries();  // the search structure, built now, not by a first query
+  tree_ = std::move(tree);
+}
+
+CreaseDistance::~CreaseDistance() = default;
+
+double CreaseDistance::operator()(const Point3& p) const {
+  if (!tree_) return std::numeric_limits<double>::infinity();
+  return std::sqrt(tree_->tree.squared_distance(p));
+}
+
+}  // namespace envcrust::envelope
