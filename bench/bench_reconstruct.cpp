@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
       o.with_normals = true;
       const PointSet ps = surfaces::sample_surface(*surface, o);
       envelope::SurfaceSamples samples{ps.points, ps.normals,
-                                       surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface))};
+                                       surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface)), {}};
       double outliers_s = 0.0, normals_s = 0.0, boundary_s = 0.0;
       bench::take_peak_mb();  // the peak below is the reconstruction's, sampling excluded
       auto t0 = std::chrono::steady_clock::now();

@@ -21,7 +21,7 @@ struct SurfaceSamples {
   /// Sharp creases of M (a mesh's edges bent by more than 80 degrees), as segments; empty
   /// for a smooth M. M has no reach there: the reach estimates leave out the pairs that may
   /// span a crease, and the sheet is joined across them (SheetOptions::crease_fold_min_angle_deg).
-  std::vector<std::array<Point3, 2>> creases;
+  std::vector<CreaseSegment> creases;
 };
 
 /// Envelope samples generated within this many rho of a crease: on the concave side the
@@ -36,7 +36,7 @@ inline constexpr double kCreaseReachRelRho = 2.0;
 /// there are none. Built eagerly: queries are safe from several threads at once.
 class CreaseDistance {
  public:
-  explicit CreaseDistance(const std::vector<std::array<Point3, 2>>& creases);
+  explicit CreaseDistance(const std::vector<CreaseSegment>& creases);
   ~CreaseDistance();
   CreaseDistance(const CreaseDistance&) = delete;
   CreaseDistance& operator=(const CreaseDistance&) = delete;

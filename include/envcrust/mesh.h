@@ -117,7 +117,7 @@ struct SharpEdges {
   double total_length = 0.0;     ///< their summed length
   double max_bend_deg = 0.0;     ///< the largest bend found (over all edges of two faces)
   std::optional<Point3> sharpest;  ///< the midpoint of the most bent edge, when count > 0
-  std::vector<std::array<Point3, 2>> segments;  ///< the edges bent by more than the threshold
+  std::vector<CreaseSegment> segments;  ///< the edges bent by more than the threshold
 };
 
 /// The edges shared by exactly two faces (welded by exact coordinates) whose normals make

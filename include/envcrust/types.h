@@ -61,4 +61,12 @@ struct BoundaryCurve {
   [[nodiscard]] Polyline polyline() const;  ///< the positions, in order
 };
 
+/// A sharp crease of a surface: an edge where two faces meet at an angle, with the unit
+/// direction that bisects the wedge between the faces (the side where they make less than
+/// 180 degrees).
+struct CreaseSegment {
+  Point3 a, b;
+  Vector3 wedge;
+};
+
 }  // namespace envcrust

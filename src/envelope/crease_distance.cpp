@@ -18,10 +18,10 @@ struct CreaseDistance::Tree {
   AabbTree tree;
 };
 
-CreaseDistance::CreaseDistance(const std::vector<std::array<Point3, 2>>& creases) {
+CreaseDistance::CreaseDistance(const std::vector<CreaseSegment>& creases) {
   auto tree = std::make_unique<Tree>();
-  for (const auto& [a, b] : creases)
-    if (a != b) tree->segments.emplace_back(a, b);
+  for (const auto& c : creases)
+    if (c.a != c.b) tree->segments.emplace_back(c.a, c.b);
   if (tree->segments.empty()) return;
   tree->tree.insert(tree->segments.cbegin(), tree->segments.cend());
   tree->tree.build();

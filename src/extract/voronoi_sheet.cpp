@@ -33,6 +33,26 @@ using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 
 constexpr Index kUnused = std::numeric_limits<Index>::max();
 
+// The creases whose wedge is open at the scale of rho: a ball of radius 0.9 rho centred
+// 2 rho along the wedge's bisector is clear of M (faces meeting at 54 degrees or more, with
+// nothing else of M in between). The folded rim of a plate thinner than rho (an ear) is not
+// such a crease: pairs across it join the plate's two sides, not the crease's.
+std::vector<CreaseSegment> open_creases(const std::vector<CreaseSegment>& creases,
+                                        const std::vector<envelope::EnvelopeSample>& samples,
+                                        const NearestIndex& generators) {
+  std::vector<char> keep(creases.size(), 0);
+  tbb::parallel_for(std::size_t{0}, creases.size(), [&](std::size_t i) {
+    const Point3 middle = CGAL::midpoint(creases[i].a, creases[i].b);
+    const auto& nearest = samples[generators.nearest(middle).first];
+    const double rho = std::sqrt(CGAL::squared_distance(nearest.position, nearest.generator));
+    keep[i] = !generators.any_within(middle + 2.0 * rho * creases[i].wedge, 0.9 * rho);
+  });
+  std::vector<CreaseSegment> out;
+  for (std::size_t i = 0; i < creases.size(); ++i)
+    if (keep[i]) out.push_back(creases[i]);
+  return out;
+}
+
 }  // namespace
 
 RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg, const FoldPairs& folds) {
@@ -80,9 +100,19 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
   // (points along it checked against the generators, which sample M). Per sample, the
   // largest u_p . u_q its fold pairs may have (-2: none).
   auto fold_dot = [](double angle_deg) { return angle_deg > 0 ? std::cos(angle_deg * std::numbers::pi / 180.0) : -2.0; };
-  std::vector<double> max_fold_dot(samples.size(), fold_dot(folds.min_angle_deg));
-  if (folds.creases && !folds.creases->empty() && folds.crease_min_angle_deg > 0) {
-    const envelope::CreaseDistance creases(*folds.creases);
+  const double global_fold_dot = fold_dot(folds.min_angle_deg);
+  const bool has_creases = folds.creases && !folds.creases->empty() && folds.crease_min_angle_deg > 0;
+  std::vector<Point3> generators;
+  if (global_fold_dot > -2.0 || has_creases) {
+    generators.reserve(samples.size());
+    for (const auto& s : samples) generators.push_back(s.generator);
+  }
+  const std::optional<NearestIndex> generator_index =
+      generators.empty() ? std::nullopt : std::optional<NearestIndex>(std::in_place, generators);
+  const envelope::CreaseDistance creases(has_creases ? open_creases(*folds.creases, samples, *generator_index)
+                                                     : std::vector<CreaseSegment>{});
+  std::vector<double> max_fold_dot(samples.size(), global_fold_dot);
+  if (!creases.empty()) {
     const double crease_dot = fold_dot(folds.crease_min_angle_deg);
     tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
       const double rho = std::sqrt(CGAL::squared_distance(samples[i].position, samples[i].generator));
@@ -91,22 +121,19 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     });
   }
   const bool use_folds = std::any_of(max_fold_dot.begin(), max_fold_dot.end(), [](double d) { return d > -2.0; });
-  std::vector<Point3> generators;
-  if (use_folds) {
-    generators.reserve(samples.size());
-    for (const auto& s : samples) generators.push_back(s.generator);
-  }
-  const std::optional<NearestIndex> generator_index =
-      use_folds ? std::optional<NearestIndex>(std::in_place, generators) : std::nullopt;
   auto is_fold_pair = [&](Index p, Index q, double dot) {
     if (!use_folds || dot > std::max(max_fold_dot[p], max_fold_dot[q])) return false;
     const double rho = std::sqrt(std::min(CGAL::squared_distance(samples[p].position, samples[p].generator),
                                           CGAL::squared_distance(samples[q].position, samples[q].generator)));
+    // A pair only a crease lets in must cross M by the crease: in a groove narrower than
+    // rho, pairs between the walls' sheets also cross M, but away from the crease line.
+    const bool crease_only = dot > global_fold_dot;
     constexpr int kSteps = 16;
     for (int k = 1; k < kSteps; ++k) {
       const double t = static_cast<double>(k) / kSteps;
       const Point3 x = samples[p].position + t * (samples[q].position - samples[p].position);
-      if (generator_index->any_within(x, folds.clearance_rel_rho * rho)) return true;
+      if (generator_index->any_within(x, folds.clearance_rel_rho * rho))
+        return !crease_only || creases(x) <= folds.crease_reach_rel_rho * rho;
     }
     return false;
   };

@@ -25,7 +25,7 @@ struct FoldPairs {
   double crease_min_angle_deg = 0.0;  ///< for pairs with a generator near `creases`; 0 disables
   double crease_reach_rel_rho = 2.0;  ///< "near": within this many rho of a crease segment
   double clearance_rel_rho = 0.25;
-  const std::vector<std::array<Point3, 2>>* creases = nullptr;
+  const std::vector<CreaseSegment>* creases = nullptr;
 };
 
 /// Build the Delaunay triangulation of the envelope samples and collect the dual polygons of

@@ -7,6 +7,24 @@
 #include <tuple>
 
 namespace envcrust::mesh {
+namespace {
+
+// The unit direction halfway between the two faces of edge ab, each face's direction being
+// from the edge to its third vertex, square to the edge.
+Vector3 wedge_bisector(const TriangleMesh& mesh, Index f, Index g, const Point3& a, const Point3& b) {
+  const Vector3 edge = (b - a) / std::sqrt(CGAL::squared_distance(a, b));
+  auto into = [&](Index face) {
+    Vector3 sum(0, 0, 0);
+    for (Index v : mesh.triangles[face]) sum = sum + (mesh.vertices[v] - a);
+    const Vector3 d = sum - (sum * edge) * edge;  // the third vertex's offset square to the edge
+    return d / std::sqrt(d.squared_length());
+  };
+  const Vector3 sum = into(f) + into(g);
+  const double length = std::sqrt(sum.squared_length());
+  return length > 0 ? sum / length : Vector3(0, 0, 0);
+}
+
+}  // namespace
 
 SharpEdges sharp_edges(const TriangleMesh& input, double min_bend_deg) {
   const TriangleMesh mesh = weld_identical_vertices(input);
@@ -49,7 +67,7 @@ SharpEdges sharp_edges(const TriangleMesh& input, double min_bend_deg) {
       if (cos_bend < cos_threshold) {
         const Point3 &a = mesh.vertices[e.lo], &b = mesh.vertices[e.hi];
         ++out.count;
-        out.segments.push_back({a, b});
+        out.segments.push_back({a, b, wedge_bisector(mesh, e.face, d.face, a, b)});
         out.total_length += std::sqrt(CGAL::squared_distance(a, b));
         if (cos_bend < min_cos) out.sharpest = CGAL::midpoint(a, b);
       }

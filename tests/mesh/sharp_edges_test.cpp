@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 using namespace envcrust;
 
 TEST(SharpEdges, a_sheet_folded_by_90_degrees_has_its_fold_and_nothing_else) {
@@ -50,4 +53,23 @@ TEST(SharpEdges, border_edges_and_degenerate_faces_are_left_out) {
                              static_cast<Index>(sheet.vertices.size() - 1)});
   const auto sharp = mesh::sharp_edges(sheet, 80.0);
   EXPECT_EQ(sharp.count, static_cast<std::size_t>(n));  // the border's edges have one face each
+}
+
+TEST(SharpEdges, each_fold_segment_carries_the_bisector_of_the_wedge_between_its_faces) {
+  // The sheet runs along -x at z = 0 and, past the fold x = z = 0, up along +z: the faces meet
+  // at 90 degrees on the side of (-1, 0, 1), whichever way the faces are wound.
+  for (const bool flipped : {false, true}) {
+    auto sheet = fixtures::folded_sheet(90.0, 20);
+    if (flipped)
+      for (auto& t : sheet.triangles) std::swap(t[1], t[2]);
+    const auto sharp = mesh::sharp_edges(sheet, 80.0);
+    ASSERT_EQ(sharp.segments.size(), 20u);
+    for (const auto& crease : sharp.segments) {
+      EXPECT_NEAR(crease.a.x(), 0.0, 1e-12);
+      EXPECT_NEAR(crease.b.z(), 0.0, 1e-12);
+      EXPECT_NEAR(crease.wedge.x(), -std::sqrt(0.5), 1e-9);
+      EXPECT_NEAR(crease.wedge.y(), 0.0, 1e-9);
+      EXPECT_NEAR(crease.wedge.z(), std::sqrt(0.5), 1e-9);
+    }
+  }
 }
