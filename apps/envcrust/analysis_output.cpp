@@ -21,10 +21,21 @@ std::string yes_no(bool b) { return b ? "yes" : "no"; }
 
 }  // namespace
 
+std::string knot_text(const knots::KnotReport& k) {
+  if (k.type == knots::KnotType::Unknown)
+    return "unknown (" + std::to_string(k.crossings) + " crossings in the simplest projection found: too many to read)";
+  return knots::to_string(k.type) + " (Alexander " + k.alexander + ")";
+}
+
+namespace {
+
+}  // namespace
+
 nlohmann::json knot_json(const knots::KnotReport& k) {
+  const bool read = k.type != knots::KnotType::Unknown;
   return {{"type", knots::to_string(k.type)},
-          {"alexander", k.alexander},
-          {"determinant", k.determinant},
+          {"alexander", read ? nlohmann::json(k.alexander) : nlohmann::json(nullptr)},
+          {"determinant", read ? nlohmann::json(k.determinant) : nlohmann::json(nullptr)},
           {"crossings", k.crossings},
           {"simplified_vertices", k.simplified_vertices},
           {"projections_agree", k.projections_agree}};
@@ -140,8 +151,7 @@ void print_analysis(std::ostream& out, const std::string& name, const analysis::
   for (std::size_t i = 0; i < t.boundary_loops.size() && i < 20; ++i) {
     const auto& l = t.boundary_loops[i];
     out << "  loop " << i << ": " << l.vertices.size() << " vertices, length " << l.length;
-    if (r.loops[i].knot) out << ", " << knots::to_string(r.loops[i].knot->type) << " (Alexander "
-                             << r.loops[i].knot->alexander << ")";
+    if (r.loops[i].knot) out << ", " << knot_text(*r.loops[i].knot);
     out << "\n";
   }
   for (const auto& l : r.linking)

@@ -39,11 +39,14 @@ void run_curve(const AnalyzeCommand& cmd) {
   if (cmd.common.json) {
     print_json(j);
   } else if (!cmd.common.quiet) {
-    std::cout << cmd.curve << ": " << curve.size() << " vertices, " << knots::to_string(knot.type)
-              << " (Alexander polynomial " << knot.alexander << ", determinant " << knot.determinant
-              << ", " << knot.crossings << " crossings after simplification to "
-              << knot.simplified_vertices << " vertices"
-              << (knot.projections_agree ? "" : "; projections disagreed") << ")\n";
+    if (knot.type == knots::KnotType::Unknown)
+      std::cout << cmd.curve << ": " << curve.size() << " vertices, " << knot_text(knot) << "\n";
+    else
+      std::cout << cmd.curve << ": " << curve.size() << " vertices, " << knots::to_string(knot.type)
+                << " (Alexander polynomial " << knot.alexander << ", determinant " << knot.determinant
+                << ", " << knot.crossings << " crossings after simplification to "
+                << knot.simplified_vertices << " vertices"
+                << (knot.projections_agree ? "" : "; projections disagreed") << ")\n";
   }
 }
 

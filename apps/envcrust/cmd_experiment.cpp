@@ -184,8 +184,13 @@ void register_experiment(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag(
       "--no-figures", [cmd](std::int64_t) { cmd->options.use_figures = false; }, "Tables only: no PNG figures");
-  sub->add_option("--panel-width", cmd->render.panel_width, "Pixels per panel, horizontally")->capture_default_str();
-  sub->add_option("--panel-height", cmd->render.panel_height, "Pixels per panel, vertically")->capture_default_str();
+  // Checked before the experiments run, not when their figures are drawn.
+  sub->add_option("--panel-width", cmd->render.panel_width, "Pixels per panel, horizontally")
+      ->check(CLI::Range(16, 8192))
+      ->capture_default_str();
+  sub->add_option("--panel-height", cmd->render.panel_height, "Pixels per panel, vertically")
+      ->check(CLI::Range(16, 8192))
+      ->capture_default_str();
   sub->add_option("--font", cmd->font, "TrueType font of the captions")->capture_default_str();
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_experiments(*cmd); });

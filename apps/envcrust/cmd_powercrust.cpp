@@ -54,6 +54,11 @@ void run_powercrust(PowerCrustCommand& cmd) {
   const auto result = naming_input(cmd.input, [&] {
     return powercrust::power_crust(points, cmd.options, terminal_progress(cmd.common.quiet || cmd.common.json));
   });
+  if (result.crust.triangles.empty())
+    throw InvalidInput(cmd.input + ": the Power Crust has no face (" + std::to_string(result.stats.input_points) +
+                       " points, " + std::to_string(result.stats.inner_poles) + " inner and " +
+                       std::to_string(result.stats.outer_poles) +
+                       " outer poles): the samples are too few or too sparse for a closed surface; nothing written");
   io::write_mesh(cmd.output, result.crust);
   if (!cmd.medial_axis_output.empty()) io::write_mesh(cmd.medial_axis_output, pipeline::power_shape_mesh(result));
   if (!cmd.poles_output.empty()) {

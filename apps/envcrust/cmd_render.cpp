@@ -76,8 +76,10 @@ render::View parse_view(const std::string& text) {
   std::istringstream in(text);
   if (!(in >> view.azimuth_deg >> comma >> view.elevation_deg) || comma != ',' || in >> extra)
     throw UsageError("--view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got '" + text + "'");
-  if (!(std::abs(view.elevation_deg) <= 90) || !std::isfinite(view.azimuth_deg))
+  if (!(std::abs(view.elevation_deg) <= 90))
     throw UsageError("--view: the elevation must be in [-90, 90] degrees, got '" + text + "'");
+  // Taken modulo a turn: the camera's trigonometry loses all precision on huge angles.
+  view.azimuth_deg = std::fmod(view.azimuth_deg, 360.0);
   return view;
 }
 
@@ -210,6 +212,11 @@ void run_render(RenderCommand& cmd) {
     throw UsageError("--grid " + std::to_string(cmd.grid[0]) + " " + std::to_string(cmd.grid[1]) + ": room for " +
                      std::to_string(std::max(0, cmd.grid[0]) * std::max(0, cmd.grid[1])) + " panels, not the " +
                      std::to_string(cmd.inputs.size()) + " inputs");
+  if (!cmd.grid.empty() && (static_cast<std::size_t>(cmd.grid[0] - 1) * static_cast<std::size_t>(cmd.grid[1]) >= cmd.inputs.size() ||
+                            static_cast<std::size_t>(cmd.grid[1]) > cmd.inputs.size()))
+    throw UsageError("--grid " + std::to_string(cmd.grid[0]) + " " + std::to_string(cmd.grid[1]) +
+                     ": leaves a row or column empty for " + std::to_string(cmd.inputs.size()) +
+                     (cmd.inputs.size() == 1 ? " input" : " inputs"));
 
   std::vector<std::string> warnings;
   std::vector<PanelScene> scenes;

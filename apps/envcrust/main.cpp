@@ -4,13 +4,28 @@
 #include "commands.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/io.h"
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 
+namespace {
+
+// An interrupted or killed run removes the output it was writing (a hidden temp file), then
+// dies of the signal as it would have.
+extern "C" void remove_temp_files_and_die(int signal) {
+  envcrust::io::remove_pending_temp_files();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temp_files_and_die);
   CLI::App app{
       "envcrust: reconstruction of surfaces with boundary through their rho-envelope.\n"
       "Run 'envcrust SUBCOMMAND --help' for the options of a subcommand."};

@@ -68,7 +68,8 @@ DistanceReport compare_to_points(const TriangleMesh& mesh, const std::vector<Poi
                                  const DistanceOptions& options = {});
 
 /// Symmetric Hausdorff distance between two closed polylines (vertices and points along
-/// segments at 1/8 of the shorter curve's mean edge length, against segments).
+/// segments at 1/8 of the shorter curve's mean edge length, or at 1/200,000 of a curve's
+/// length if that is longer, against segments).
 double closed_polyline_hausdorff(const Polyline& a, const Polyline& b);
 
 /// The same with the worst (1 - fraction) of each curve's length left out: the largest over

@@ -71,12 +71,18 @@ void write_polyline(const std::filesystem::path& path, const Polyline& curve);
 
 /// Write a file atomically: `fill` writes into a stream opened on a temp file next to `path`;
 /// on success the temp file is renamed onto `path`; on any failure it is removed and no
-/// partial output remains. @throws IoError naming the file.
+/// partial output remains. A symbolic link is followed (its target is replaced, the link
+/// stays); an existing device, pipe or socket is refused, not replaced.
+/// @throws IoError naming the file.
 void write_atomic(const std::filesystem::path& path, bool binary,
                   const std::function<void(std::ostream&)>& fill);
 
 /// Write a text file atomically (reports, JSON).
 void write_text(const std::filesystem::path& path, const std::string& text);
+
+/// Removes the temporary files write_atomic is filling at the moment. Async-signal-safe:
+/// for a SIGINT/SIGTERM handler, so that an interrupted run leaves no hidden .tmp file.
+void remove_pending_temp_files() noexcept;
 
 /// What an output file is written as, for check_output_path.
 enum class OutputKind {
@@ -88,7 +94,8 @@ enum class OutputKind {
 };
 
 /// Check before a long run that `path` can be written as `kind`: a file name with a known
-/// extension, in a folder that exists, not itself a folder ("out: is a folder, not a file").
+/// extension, in a folder that exists and is writable, not itself a folder ("out: is a
+/// folder, not a file") nor a device, pipe or socket.
 /// @throws IoError naming the file ("x.unknown: unknown
 /// extension '.unknown' (expected .ply, .off, .obj)", "out/x.ply: folder 'out' does not exist").
 void check_output_path(const std::filesystem::path& path, OutputKind kind);

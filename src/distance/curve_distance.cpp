@@ -75,9 +75,15 @@ double closed_polyline_partial_hausdorff(const Polyline& a, const Polyline& b, d
   if (!(fraction > 0 && fraction <= 1))
     throw InvalidInput("closed_polyline_partial_hausdorff: fraction must be in (0, 1]");
   if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
-  const double step = std::max(1e-12, std::min(mean_edge(a), mean_edge(b)) / 8.0);
-  return std::max(quantile(directed(densify(a, step), b), fraction),
-                  quantile(directed(densify(b, step), a), fraction));
+  // Each curve gets at most about kMaxPoints points between its vertices: a curve of tiny
+  // edges beside a long one (a boundary given as a point grid) would otherwise ask billions.
+  constexpr double kMaxPoints = 200000.0;
+  const double step = std::min(mean_edge(a), mean_edge(b)) / 8.0;
+  auto step_along = [&](const Polyline& c) {
+    return std::max({step, mean_edge(c) * static_cast<double>(c.size()) / kMaxPoints, 1e-12});
+  };
+  return std::max(quantile(directed(densify(a, step_along(a)), b), fraction),
+                  quantile(directed(densify(b, step_along(b)), a), fraction));
 }
 
 }  // namespace envcrust::distance

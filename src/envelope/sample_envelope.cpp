@@ -267,6 +267,10 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                            (noise_allowance > 0 ? " - 3 noise" : std::string()) +
                            " to the surface (the envelope folds onto itself)");
   }
+  if (options.rho && out.rho > 0.25 * diag)
+    out.warnings.push_back("rho " + format(out.rho) + " is more than a quarter of the input's diagonal (" +
+                           format(diag) + "): the envelope rounds off the whole shape, and the result may not "
+                           "resemble the input (the automatic rho follows the reach)");
 
   std::vector<Point3> positions;
   positions.reserve(kept_candidates.size());

@@ -67,6 +67,7 @@ ExperimentResult run_unknot_curve(const ExperimentOptions& options) {
           ++trefoil;
           break;
         case knots::KnotType::Other:
+        case knots::KnotType::Unknown:
           ++other;
           break;
       }

@@ -114,9 +114,8 @@ BallSet read_balls(const std::filesystem::path& path) {
         detail::fail_at(path, number, "expected a number, got " + detail::quote(tokens[k]));
       }
     }
-    if (!std::isfinite(values[0]) || !std::isfinite(values[1]) || !std::isfinite(values[2])) {
-      detail::fail_at(path, number, "non-finite coordinate");
-    }
+    for (int axis = 0; axis < 3; ++axis)
+      if (const char* problem = detail::coordinate_problem(values[axis])) detail::fail_at(path, number, problem);
     check_radius(path, number, values[3], true);
     balls.centres.emplace_back(values[0], values[1], values[2]);
     balls.radii.push_back(values[3]);

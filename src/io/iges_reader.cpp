@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <sstream>
 
 namespace envcrust::io::detail {
 
@@ -27,6 +28,7 @@ constexpr std::size_t kDataColumns = 72;
 constexpr std::size_t kParameterColumns = 64;
 /// A parameter-plane point within this fraction of the domain's size lies on its border.
 constexpr double kBorderTolerance = 1e-6;
+constexpr double kMaxPointer = 1e9;  // directory pointers: 8 digits
 
 /// One directory entry: where an entity's parameters are and how it is placed.
 struct DirectoryEntry {
@@ -132,12 +134,14 @@ class IgesFile {
   /// The parameter and record delimiters, the global section's first two fields ("1H," and
   /// "1H;"; an empty field keeps the default).
   void read_delimiters() {
+    // A "1Hc" field at pos (a missing or short global section keeps the defaults).
+    auto hollerith_at = [&](std::size_t pos) { return global_.size() > pos + 2 && global_.compare(pos, 2, "1H") == 0; };
     std::size_t pos = 1;  // an empty first field: the default, then a delimiter
-    if (global_.compare(0, 2, "1H") == 0 && global_.size() > 2) {
+    if (hollerith_at(0)) {
       parameter_delimiter_ = global_[2];
       pos = 4;  // past "1H" + the delimiter + the delimiter that ends the field
     }
-    if (global_.compare(pos, 2, "1H") == 0 && global_.size() > pos + 2) record_delimiter_ = global_[pos + 2];
+    if (hollerith_at(pos)) record_delimiter_ = global_[pos + 2];
   }
 
   [[nodiscard]] std::size_t directory_field(std::size_t line, int field) const {
@@ -170,6 +174,17 @@ class IgesFile {
   std::vector<DirectoryEntry> entries_;
   char parameter_delimiter_ = ',', record_delimiter_ = ';';
 };
+
+// A count or a pointer, stored as a number: a whole number in [0, limit] (casting a value
+// beyond the integers' range, such as 1e300, would be undefined).
+std::size_t whole_number(const IgesFile& file, double x, double limit, const std::string& what) {
+  if (!(x >= 0 && x <= limit && x == std::floor(x))) {
+    std::ostringstream text;
+    text << what << " is " << x << ", not a whole number from 0 to " << limit;
+    file.fail(text.str());
+  }
+  return static_cast<std::size_t>(x);
+}
 
 surfaces::NurbsPatch read_surface(const IgesFile& file, const DirectoryEntry& e) {
   const auto v = file.parameters(e);
@@ -264,9 +279,10 @@ void collect_curves(const IgesFile& file, std::size_t pointer, std::vector<surfa
     curves.push_back(std::move(c));
   } else if (e.type == kComposite && depth < 8) {
     short_of(1);
-    const auto n = static_cast<std::size_t>(std::max(0.0, v[0]));
+    const std::size_t n = whole_number(file, v[0], 1e6, describe(e) + ": its curve count");
     short_of(1 + n);
-    for (std::size_t i = 0; i < n; ++i) collect_curves(file, static_cast<std::size_t>(v[1 + i]), curves, depth + 1);
+    for (std::size_t i = 0; i < n; ++i)
+      collect_curves(file, whole_number(file, v[1 + i], kMaxPointer, describe(e) + ": a curve pointer"), curves, depth + 1);
   } else {
     file.fail("a trimming curve of IGES entity " + std::to_string(e.type) +
               " (lines 110, circular arcs 100, B-spline curves 126 and composite curves 102 are read)");
@@ -311,7 +327,7 @@ std::vector<surfaces::TrimCurve> trim_loop(const IgesFile& file, std::size_t poi
     file.fail(std::string("the ") + what + " (" + describe(e) +
               ") is given in space only, with no parameter-plane curve: not supported");
   std::vector<surfaces::TrimCurve> curves;
-  collect_curves(file, static_cast<std::size_t>(c[2]), curves);
+  collect_curves(file, whole_number(file, c[2], kMaxPointer, describe(e) + ": its curve pointer"), curves);
   return curves;
 }
 
@@ -321,16 +337,19 @@ std::vector<surfaces::TrimCurve> trim_loop(const IgesFile& file, std::size_t poi
 surfaces::NurbsPatch trimmed_patch(const IgesFile& file, const DirectoryEntry& trimmed, std::size_t& base_line) {
   const auto v = file.parameters(trimmed);
   if (v.size() < 3) file.fail(describe(trimmed) + ": fewer than 3 parameters");
-  const DirectoryEntry& base = file.entry(static_cast<std::size_t>(v[0]), "trimmed surface's base surface");
+  const DirectoryEntry& base = file.entry(whole_number(file, v[0], kMaxPointer, describe(trimmed) + ": its surface pointer"),
+                                         "trimmed surface's base surface");
   if (base.type != kSurface)
     file.fail("a trimmed surface (IGES entity 144) over IGES entity " + std::to_string(base.type) +
               ": envcrust reads rational B-spline surfaces (entity 128)");
   base_line = base.line;
   surfaces::NurbsPatch patch = read_surface(file, base);
-  const auto holes = static_cast<std::size_t>(std::max(0.0, v[2]));
+  const std::size_t holes = whole_number(file, v[2], 1e6, describe(trimmed) + ": its hole count");
   if (v.size() < 4 + holes) file.fail(describe(trimmed) + ": fewer boundary curves than it counts");
   std::vector<surfaces::TrimCurve> outer;
-  if (v[1] != 0) outer = trim_loop(file, static_cast<std::size_t>(v[3]), "outer boundary");
+  if (v[1] != 0)
+    outer = trim_loop(file, whole_number(file, v[3], kMaxPointer, describe(trimmed) + ": its outer boundary pointer"),
+                      "outer boundary");
   if (!outer.empty() && !is_domain_border(outer, *patch.parameter_range)) patch.trim_loops.push_back(std::move(outer));
   if (holes == 0 && patch.trim_loops.empty()) return patch;  // trimmed along its own border
   if (patch.trim_loops.empty()) {  // holes in the whole domain: its border is the outer loop
@@ -338,7 +357,8 @@ surfaces::NurbsPatch trimmed_patch(const IgesFile& file, const DirectoryEntry& t
     patch.trim_loops.push_back({polyline_curve({{r[0], r[2]}, {r[1], r[2]}, {r[1], r[3]}, {r[0], r[3]}, {r[0], r[2]}})});
   }
   for (std::size_t h = 0; h < holes; ++h)
-    patch.trim_loops.push_back(trim_loop(file, static_cast<std::size_t>(v[4 + h]), "inner boundary"));
+    patch.trim_loops.push_back(trim_loop(
+        file, whole_number(file, v[4 + h], kMaxPointer, describe(trimmed) + ": a hole's pointer"), "inner boundary"));
   return patch;
 }
 

@@ -28,6 +28,8 @@ void fail_at(const std::filesystem::path& path, std::size_t line, const std::str
 }
 
 void unknown_extension(const std::filesystem::path& path, const char* expected) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");  // not "no extension"
   const std::string extension = path.extension().string();
   fail(path, (extension.empty() ? std::string("no extension")
                                 : "unknown extension '" + extension + "'") +

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstring>
 #include <cstdint>
+#include <cmath>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -20,6 +21,18 @@ namespace envcrust::io::detail {
 
 /// Throw IoError "FILE: problem".
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& problem);
+
+/// Coordinates beyond this magnitude are refused: their squares and cross products (areas,
+/// volumes, distances) would overflow a double in the stages that follow.
+inline constexpr double max_coordinate = 1e30;
+
+/// What is wrong with a coordinate read from a file: "non-finite coordinate", "coordinate
+/// beyond 1e30 in magnitude", or nullptr when it is usable.
+inline const char* coordinate_problem(double value) {
+  if (!std::isfinite(value)) return "non-finite coordinate";
+  if (std::abs(value) > max_coordinate) return "coordinate beyond 1e30 in magnitude: scale the input down";
+  return nullptr;
+}
 
 /// Throw IoError "FILE:LINE: problem".
 [[noreturn]] void fail_at(const std::filesystem::path& path, std::size_t line,

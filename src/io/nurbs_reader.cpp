@@ -16,11 +16,15 @@ surfaces::NurbsPatch read_geomdl_json(const std::filesystem::path& path) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(detail::read_file(path));
-  } catch (const nlohmann::json::parse_error& e) {
-    // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+  } catch (const nlohmann::json::exception& e) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ...", or
+    // "[json.exception.out_of_range.406] number overflow parsing '1e999'"
     const std::string what = e.what();
     const auto colon = what.find("parse error");
-    fail(path, "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon)));
+    const auto bracket = what.find("] ");
+    fail(path, "invalid JSON: " + (colon != std::string::npos   ? what.substr(colon)
+                                   : bracket != std::string::npos ? what.substr(bracket + 2)
+                                                                  : what));
   }
   try {
     const auto& shape = j.at("shape");
@@ -34,13 +38,17 @@ surfaces::NurbsPatch read_geomdl_json(const std::filesystem::path& path) {
     if (d.contains("trims") && !d.at("trims").at("data").empty())
       fail(path, "a trimmed surface: NURBS-Python trim curves are not read (an IGES trimmed surface, entity 144, is)");
     surfaces::NurbsPatch p;
-    p.degree_u = d.at("degree_u").get<int>();
-    p.degree_v = d.at("degree_v").get<int>();
-    const auto count = [&](const char* key) {
-      const auto n = d.at(key).get<std::int64_t>();
-      if (n < 1 || n > 1000000) fail(path, std::string(key) + " is " + std::to_string(n) + ", not a count of 1 to 1000000");
-      return static_cast<std::size_t>(n);
+    // A whole number in [low, high] (a float such as 1e20 would not convert to an int).
+    const auto whole = [&](const char* key, std::int64_t low, std::int64_t high, const char* what) {
+      const auto& value = d.at(key);
+      if (!value.is_number_integer() || value.get<std::int64_t>() < low || value.get<std::int64_t>() > high)
+        fail(path, std::string(key) + " is " + value.dump() + ", not " + what + " of " + std::to_string(low) + " to " +
+                       std::to_string(high));
+      return value.get<std::int64_t>();
     };
+    p.degree_u = static_cast<int>(whole("degree_u", 1, 64, "a degree"));
+    p.degree_v = static_cast<int>(whole("degree_v", 1, 64, "a degree"));
+    const auto count = [&](const char* key) { return static_cast<std::size_t>(whole(key, 1, 1000000, "a count")); };
     p.count_u = count("size_u");
     p.count_v = count("size_v");
     p.knots_u = d.at("knotvector_u").get<std::vector<double>>();

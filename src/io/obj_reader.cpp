@@ -55,8 +55,8 @@ RawMesh read_obj(const std::filesystem::path& path) {
         if (!parse_double(tokens[1 + axis], xyz[axis])) {
           fail_at(path, number, "expected a number, got " + quote(tokens[1 + axis]));
         }
-        if (!std::isfinite(xyz[axis])) {
-          fail_at(path, number, "non-finite coordinate");
+        if (const char* problem = coordinate_problem(xyz[axis])) {
+          fail_at(path, number, problem);
         }
       }
       mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);

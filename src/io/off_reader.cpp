@@ -119,8 +119,8 @@ RawMesh read_off(const std::filesystem::path& path) {
       if (!parse_double(tokens[axis], xyz[axis])) {
         fail_at(path, line, "expected a number, got " + quote(tokens[axis]));
       }
-      if (!std::isfinite(xyz[axis])) {
-        fail_at(path, line, "non-finite coordinate");
+      if (const char* problem = coordinate_problem(xyz[axis])) {
+        fail_at(path, line, problem);
       }
     }
     mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);

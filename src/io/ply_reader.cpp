@@ -330,8 +330,8 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
         for (int axis = 0; axis < 3; ++axis) {
           if (p == layout.coordinate[axis]) {
             coordinate[axis] = value;
-            if (!std::isfinite(value)) {
-              source.error("non-finite coordinate");
+            if (const char* problem = coordinate_problem(value)) {
+              source.error(problem);
             }
           }
           if (layout.has_normals && p == *layout.normal[axis]) {

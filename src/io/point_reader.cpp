@@ -151,8 +151,8 @@ PointSet read_xyz(const std::filesystem::path& path) {
       if (!parse_double(tokens[column], v[i])) {
         fail_at(path, line_number, "expected a number, got " + quote(tokens[column]));
       }
-      if (!std::isfinite(v[i])) {
-        fail_at(path, line_number, i < 3 ? "non-finite coordinate" : "non-finite normal");
+      if (const char* problem = i < 3 ? coordinate_problem(v[i]) : std::isfinite(v[i]) ? nullptr : "non-finite normal") {
+        fail_at(path, line_number, problem);
       }
     }
     result.points.emplace_back(v[0], v[1], v[2]);

@@ -18,8 +18,8 @@ Point3 parse_point(const std::filesystem::path& path, std::size_t line,
     if (!detail::parse_double(tokens[axis], xyz[axis])) {
       detail::fail_at(path, line, "expected a number, got " + detail::quote(tokens[axis]));
     }
-    if (!std::isfinite(xyz[axis])) {
-      detail::fail_at(path, line, "non-finite coordinate");
+    if (const char* problem = detail::coordinate_problem(xyz[axis])) {
+      detail::fail_at(path, line, problem);
     }
   }
   return {xyz[0], xyz[1], xyz[2]};

@@ -89,8 +89,8 @@ RawMesh read_binary(const std::filesystem::path& path, std::string_view data) {
       double xyz[3];
       for (int axis = 0; axis < 3; ++axis) {
         xyz[axis] = read_le_float(corner + 4 * (3 * c + axis));
-        if (!std::isfinite(xyz[axis])) {
-          fail(path, "triangle " + std::to_string(t) + ": non-finite coordinate");
+        if (const char* problem = coordinate_problem(xyz[axis])) {
+          fail(path, "triangle " + std::to_string(t) + ": " + problem);
         }
       }
       face[c] = merger.add(xyz[0], xyz[1], xyz[2]);
@@ -139,8 +139,8 @@ class AsciiParser {
           if (!parse_double(token, value)) {
             error("expected a number, got " + quote(token));
           }
-          if (!std::isfinite(value)) {
-            error("non-finite coordinate");
+          if (const char* problem = coordinate_problem(value)) {
+            error(problem);
           }
         }
         face.push_back(merger.add(xyz[0], xyz[1], xyz[2]));

@@ -93,6 +93,8 @@ std::string to_string(KnotType type) {
       return "figure-eight";
     case KnotType::Other:
       return "other";
+    case KnotType::Unknown:
+      return "unknown";
   }
   return "other";
 }
@@ -102,6 +104,10 @@ KnotReport identify_knot(const Polyline& closed, const KnotOptions& options) {
   if (options.projections < 1) {
     throw InvalidOptions("KnotOptions.projections must be >= 1 (got " +
                          std::to_string(options.projections) + ")");
+  }
+  if (options.max_crossings < 0) {
+    throw InvalidOptions("KnotOptions.max_crossings must be >= 0 (got " +
+                         std::to_string(options.max_crossings) + ")");
   }
   const Polyline cleaned = detail::remove_repeated_points(closed);
   std::vector<Polyline> loops = {cleaned};
@@ -128,6 +134,13 @@ KnotReport identify_knot(const Polyline& closed, const KnotOptions& options) {
   for (int i = 0; i < options.projections; ++i) {
     const detail::Diagram diagram =
         detail::simplest_generic_diagram(loops, rng, detail::diagrams_per_projection);
+    if (diagram.crossings.size() > static_cast<std::size_t>(options.max_crossings)) {
+      report.type = KnotType::Unknown;
+      report.alexander.clear();
+      report.determinant = 0;
+      report.crossings = static_cast<int>(diagram.crossings.size());
+      return report;
+    }
     const detail::Polynomial delta = detail::alexander_polynomial(diagram);
     const detail::BigInt at_minus_one = abs(delta.evaluate(-1));
     readings.push_back({detail::to_string(delta), at_minus_one.convert_to<std::int64_t>(),

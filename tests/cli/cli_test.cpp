@@ -463,6 +463,20 @@ TEST_F(CliTest, powercrust_leaves_out_small_poles_of_a_noisy_sample) {
   EXPECT_FALSE(fs::exists(path("x.ply")));
 }
 
+// Five points make a Delaunay triangulation but no crust: an error, not an empty mesh.
+TEST_F(CliTest, powercrust_of_too_few_points_is_an_error_and_writes_nothing) {
+  {
+    std::ofstream out(path("five.xyz"));
+    out << "0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.3 0.3 0.3\n";
+  }
+  const auto r = run_envcrust("powercrust " + path("five.xyz") + " -o " + path("c.ply"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: " + path("five.xyz") + ": the Power Crust has no face (5 points, ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("): the samples are too few or too sparse for a closed surface; nothing written\n"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("c.ply")));
+}
+
 TEST_F(CliTest, powercrust_sampling_estimate_reports_bad_second_poles) {
   ASSERT_EQ(run_envcrust("sample sphere -n 10000 --noise 0.001 --seed 1 -q -o " + path("s.xyz")).exit_code, 0);
   const auto j = run_envcrust_json("powercrust " + path("s.xyz") + " --sampling-estimate 0.6 -o " + path("s.ply") +

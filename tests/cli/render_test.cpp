@@ -130,7 +130,24 @@ TEST_F(CliTest, render_bad_size_and_view_are_usage_errors) {
   const auto grid = run_envcrust("render builtin:sphere builtin:torus builtin:square --grid 1 2 -o " + path("x.png"));
   EXPECT_EQ(grid.exit_code, 2);
   EXPECT_EQ(grid.err, "envcrust: usage error: --grid 1 2: room for 2 panels, not the 3 inputs\n");
+  // A grid far larger than the inputs would be a canvas of empty panels (300,000 columns).
+  const auto wide = run_envcrust("render builtin:sphere builtin:torus --grid 1 300000 -o " + path("x.png"));
+  EXPECT_EQ(wide.exit_code, 2);
+  EXPECT_EQ(wide.err, "envcrust: usage error: --grid 1 300000: leaves a row or column empty for 2 inputs\n");
+  const auto tall = run_envcrust("render builtin:sphere builtin:torus builtin:square --grid 3 2 -o " + path("x.png"));
+  EXPECT_EQ(tall.exit_code, 2);
+  EXPECT_EQ(tall.err, "envcrust: usage error: --grid 3 2: leaves a row or column empty for 3 inputs\n");
   EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+// An azimuth is an angle: one of 1e308 degrees is taken modulo a turn (it aborted the
+// renderer before), and 370 degrees draws what 10 does.
+TEST_F(CliTest, render_takes_the_azimuth_modulo_a_turn) {
+  const auto huge = run_envcrust("render builtin:torus --size 64x48 --view 1e308,0 -o " + path("h.png"));
+  ASSERT_EQ(huge.exit_code, 0) << huge.err;
+  ASSERT_EQ(run_envcrust("render builtin:torus --size 64x48 --view 370,20 -o " + path("a.png")).exit_code, 0);
+  ASSERT_EQ(run_envcrust("render builtin:torus --size 64x48 --view 10,20 -o " + path("b.png")).exit_code, 0);
+  EXPECT_EQ(envcrust::io::read_binary_file(path("a.png")), envcrust::io::read_binary_file(path("b.png")));
 }
 
 }  // namespace

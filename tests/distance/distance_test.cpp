@@ -69,6 +69,15 @@ TEST(Distance, concentric_circles_are_their_radius_difference_apart) {
   EXPECT_NEAR(distance::closed_polyline_hausdorff(circle(1, 400), circle(1, 400, 0.3)), 0.3, 1e-9);
 }
 
+// A curve of tiny edges beside a long one: steps of 1/8 of the tiny edges along the long
+// curve would be 8e9 points (it ran out of memory on a boundary given as a point grid); each
+// curve is stepped at 1/200,000 of its length at the finest.
+TEST(Distance, a_tiny_curve_against_a_long_one_is_stepped_along_its_own_length) {
+  const Polyline tiny = {Point3(0, 0, 0), Point3(1e-9, 0, 0), Point3(0, 1e-9, 0)};
+  const Polyline square = {Point3(-1, -1, 0), Point3(1, -1, 0), Point3(1, 1, 0), Point3(-1, 1, 0)};
+  EXPECT_NEAR(distance::closed_polyline_hausdorff(tiny, square), std::sqrt(2.0), 1e-6);  // the corners
+}
+
 // Samples at the corners of a unit square leave the midpoints of its sides 0.5 from the
 // nearest one; the midpoints are no vertex of the curve, so only the steps along the sides find
 // them. Samples inside the square (at the centre) are farther.

@@ -152,6 +152,14 @@ TEST(Envelope, too_large_rho_is_reported) {
   const auto e = envelope::sample_envelope(exact_samples("cylinder", 3000), o);
   ASSERT_FALSE(e.warnings.empty());
   EXPECT_EQ(e.warnings[0].rfind("rho 1.5 may be too large:", 0), 0u) << e.warnings[0];
+  // The cylinder's diagonal is 2 sqrt(3) = 3.46: rho 1.5 is more than a quarter of it.
+  ASSERT_EQ(e.warnings.size(), 2u);
+  EXPECT_EQ(e.warnings[1].rfind("rho 1.5 is more than a quarter of the input's diagonal (3.46", 0), 0u) << e.warnings[1];
+  EXPECT_NE(e.warnings[1].find("): the envelope rounds off the whole shape, and the result may not resemble the input"),
+            std::string::npos) << e.warnings[1];
+  o.rho = 0.8;  // below a quarter: no such warning
+  for (const auto& w : envelope::sample_envelope(exact_samples("cylinder", 3000), o).warnings)
+    EXPECT_EQ(w.find("quarter"), std::string::npos) << w;
 }
 
 TEST(Envelope, bad_options_and_inputs_are_refused) {

@@ -33,9 +33,17 @@ TEST_F(ExperimentCli, list_names_every_experiment_with_its_figures) {
 TEST_F(ExperimentCli, help_shows_the_defaults_and_the_common_flags) {
   const auto r = run_envcrust("experiment --help");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const std::string flag : {"--quick", "--seed UINT=1", "--data-dir TEXT=../shared/data", "--panel-width INT=320",
+  for (const std::string flag : {"--quick", "--seed UINT=1", "--data-dir TEXT=../shared/data", "--panel-width INT:INT in [16 - 8192]=320",
                                  "--json", "--quiet"})
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
+}
+
+// A panel size the figures cannot take fails when parsed, not after the experiments ran.
+TEST_F(ExperimentCli, panel_sizes_are_checked_before_the_run) {
+  const auto r = run_envcrust("experiment cylinder --quick --panel-width 0 -o " + dir_.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "envcrust: usage error: --panel-width: Value 0 not in range 16 to 8192\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "cylinder"));
 }
 
 TEST_F(ExperimentCli, quick_cylinder_writes_json_markdown_and_figures) {

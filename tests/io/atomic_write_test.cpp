@@ -2,6 +2,8 @@
 #include "envcrust/io.h"
 #include "io_test_support.h"
 
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -84,6 +86,52 @@ TEST_F(AtomicWrite, reports_target_that_is_a_folder) {
   const std::string message = io_error_of([&] { write_text(file, "x"); });
   EXPECT_EQ(message.rfind(file.string() + ": cannot replace file (", 0), 0U) << message;
   EXPECT_EQ(files(), std::vector<std::string>{"out.txt"});
+}
+
+TEST_F(AtomicWrite, follows_a_symbolic_link_and_keeps_it) {
+  const auto target = write("real.txt", "old\n");
+  std::filesystem::create_symlink(target, path("link.txt"));
+  write_text(path("link.txt"), "new\n");
+  EXPECT_TRUE(std::filesystem::is_symlink(path("link.txt")));
+  EXPECT_EQ(contents(target), "new\n");
+  EXPECT_EQ(files(), (std::vector<std::string>{"link.txt", "real.txt"}));
+}
+
+TEST_F(AtomicWrite, refuses_to_replace_a_device) {
+  // Renaming a temp file onto /dev/null would replace the device node (as root).
+  const std::filesystem::path null = "/dev/null";
+  if (!std::filesystem::is_character_file(null)) GTEST_SKIP() << "no /dev/null";
+  const std::string expected = "/dev/null: exists and is not a regular file (a device, pipe or socket): not replaced";
+  EXPECT_EQ(io_error_of([&] { write_text(null, "x"); }), expected);
+  EXPECT_EQ(io_error_of([&] { check_output_path(null, OutputKind::Text); }), expected);
+  EXPECT_TRUE(std::filesystem::is_character_file(null));
+}
+
+TEST_F(AtomicWrite, a_signal_handler_can_remove_the_file_being_filled) {
+  const auto file = path("mesh.ply");
+  EXPECT_THROW(write_atomic(file, true,
+                            [&](std::ostream& out) {
+                              out << "half";
+                              EXPECT_EQ(files().size(), 1u);  // the hidden temp file
+                              remove_pending_temp_files();
+                              EXPECT_TRUE(files().empty());
+                            }),
+               IoError);  // its rename then fails
+  EXPECT_TRUE(files().empty());
+  remove_pending_temp_files();  // nothing pending: a no-op
+}
+
+TEST_F(AtomicWrite, an_unwritable_folder_is_found_before_the_run) {
+  std::filesystem::create_directory(path("locked"));
+  std::filesystem::permissions(path("locked"), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  const auto file = path("locked") / "r.json";
+  if (::access(path("locked").c_str(), W_OK) == 0) {
+    std::filesystem::permissions(path("locked"), std::filesystem::perms::owner_all);
+    GTEST_SKIP() << "running as root: every folder is writable";
+  }
+  EXPECT_EQ(io_error_of([&] { check_output_path(file, OutputKind::Text); }),
+            file.string() + ": folder '" + path("locked").string() + "' is not writable (Permission denied)");
+  std::filesystem::permissions(path("locked"), std::filesystem::perms::owner_all);
 }
 
 TEST_F(AtomicWrite, output_paths_are_checked_before_anything_is_written) {

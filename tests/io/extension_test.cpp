@@ -68,6 +68,11 @@ TEST_F(Extension, directory_is_not_a_file) {
   const auto file = path("d.xyz");
   EXPECT_EQ(io_error_of([&] { read_points(file); }),
             file.string() + ": is a directory, not a file");
+  // Without an extension it is still named a directory, not a file lacking an extension.
+  std::filesystem::create_directory(path("scans"));
+  EXPECT_EQ(io_error_of([&] { read_points(path("scans")); }), path("scans").string() + ": is a directory, not a file");
+  EXPECT_EQ(io_error_of([&] { read_polygon_mesh(path("scans")); }),
+            path("scans").string() + ": is a directory, not a file");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "io_test_support.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace envcrust::io {
@@ -36,6 +37,15 @@ TEST_F(NurbsReader, reads_an_iges_surface_exactly_with_its_parameter_range) {
     ASSERT_TRUE(patch.parameter_range.has_value());
     EXPECT_EQ(*patch.parameter_range, (std::array<double, 4>{0, 1, 0, 1}));
   }
+}
+
+TEST_F(NurbsReader, reads_an_iges_file_without_a_global_section_with_the_default_delimiters) {
+  const auto sphere = fixtures::sphere_patch();
+  std::istringstream in(fixtures::iges_text(sphere));
+  std::string text, line;
+  while (std::getline(in, line))
+    if (line.size() < 73 || line[72] != 'G') text += line + "\n";
+  expect_same_patch(sphere, read_nurbs_patch(write("no-g.igs", text)));
 }
 
 TEST_F(NurbsReader, reads_fortran_style_iges_numbers) {
@@ -114,6 +124,18 @@ TEST_F(NurbsReader, reads_the_trimming_loops_of_an_iges_trimmed_surface) {
   EXPECT_EQ(surface->expected_topology().boundary_loops, 2);
 }
 
+// Counts and pointers are stored as numbers: one far beyond any file (a cast of 1e300 to an
+// integer would be undefined) is refused by name.
+TEST_F(NurbsReader, refuses_a_count_beyond_any_file) {
+  auto text = fixtures::iges_trimmed_text(fixtures::square_patch());
+  ASSERT_NE(text.find("144,1,0,0,0;"), std::string::npos);
+  text.replace(text.find("144,1,0,0,0;"), 12, "144,1,0,1E9;");  // 1e9 holes, same record width
+  const auto file = write("holes.igs", text);
+  const std::string message = io_error_of([&] { (void)read_nurbs_patch(file); });
+  EXPECT_NE(message.find(": its hole count is 1e+09, not a whole number from 0 to 1e+06"), std::string::npos) << message;
+  EXPECT_EQ(message.rfind(file.string() + ": entity 144", 0), 0u) << message;
+}
+
 TEST_F(NurbsReader, refuses_trimming_curves_it_cannot_place) {
   const auto square = fixtures::square_patch();
   auto text = fixtures::iges_trimmed_text(square, {fixtures::iges_line(0, 0, 1, 0)});
@@ -185,6 +207,10 @@ TEST_F(NurbsReader, refuses_json_that_is_not_one_untrimmed_surface) {
   expect_refusal("h.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1, "degree_v": 1, "size_u": -2,
       "size_v": 2, "knotvector_u": [0, 0, 1, 1], "knotvector_v": [0, 0, 1, 1], "control_points": {"points": []}}]}})",
                  "size_u is -2, not a count of 1 to 1000000");
+  expect_refusal("i.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1e999}]}})",
+                 "invalid JSON: number overflow parsing '1e999'");
+  expect_refusal("j.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1e20, "degree_v": 1}]}})",
+                 "degree_u is 1e+20, not a degree of 1 to 64");
   const auto file = write("g.txt", "");
   EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
             file.string() + ": unknown extension '.txt' (expected .igs, .iges, .json)");

@@ -78,6 +78,12 @@ TEST_F(OffReader, reports_vertex_with_wrong_column_count) {
             file.string() + ":4: expected 3 numbers for vertex 1, got 2");
 }
 
+TEST_F(OffReader, reports_a_coordinate_too_large_to_compute_with) {
+  const auto file = write("a.off", "OFF\n3 1 0\n0 0 0\n1 -1e308 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(io_error_of([&] { read_polygon_mesh(file); }),
+            file.string() + ":4: coordinate beyond 1e30 in magnitude: scale the input down");
+}
+
 TEST_F(OffReader, reports_nan_coordinate) {
   const auto file = write("a.off", "OFF\n3 1 0\n0 0 0\n1 NaN 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(io_error_of([&] { read_polygon_mesh(file); }),

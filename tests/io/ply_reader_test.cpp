@@ -80,7 +80,7 @@ std::string little_endian_cloud() {
       "element material 2\nproperty list int ushort ids\nend_header\n");
   bytes.put(0.5F).put(-1.25F).put(3.0F).put(std::uint8_t{2}).put(9.0F).put(9.0F);
   bytes.put(std::uint8_t{7}).put(0.0).put(0.0).put(1.0);
-  bytes.put(1e30F).put(2.0F).put(-3.0F).put(std::uint8_t{0});
+  bytes.put(1e29F).put(2.0F).put(-3.0F).put(std::uint8_t{0});
   bytes.put(std::uint8_t{1}).put(0.0).put(1.0).put(0.0);
   bytes.put(std::uint8_t{3}).put(std::uint32_t{0}).put(std::uint32_t{1}).put(std::uint32_t{1});
   bytes.put(std::int16_t{-1});
@@ -92,7 +92,7 @@ TEST_F(PlyReader, reads_binary_little_endian_points_with_normals) {
   const PointSet points = read_points(write("a.ply", little_endian_cloud()));
   ASSERT_EQ(points.size(), 2U);
   testing::expect_same_point(Point3(0.5, -1.25, 3), points.points[0]);
-  testing::expect_same_point(Point3(static_cast<double>(1e30F), 2, -3), points.points[1]);
+  testing::expect_same_point(Point3(static_cast<double>(1e29F), 2, -3), points.points[1]);
   ASSERT_TRUE(points.has_normals());
   EXPECT_EQ(points.normals[0], Vector3(0, 0, 1));
   EXPECT_EQ(points.normals[1], Vector3(0, 1, 0));

@@ -165,6 +165,13 @@ TEST_F(PointReader, a_number_beyond_double_range_is_non_finite_and_one_below_it_
   EXPECT_EQ(read_points(tiny).points.at(0).x(), 0.0);
 }
 
+TEST_F(PointReader, refuses_a_finite_coordinate_too_large_to_compute_with) {
+  // 1e308 is a double, but its square is not: areas and distances would overflow.
+  const auto file = write("big.xyz", "1 2 3\n4 1e308 6\n");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ":2: coordinate beyond 1e30 in magnitude: scale the input down");
+  EXPECT_EQ(read_points(write("ok.xyz", "1e30 -1e30 3\n")).points.at(0).x(), 1e30);
+}
+
 TEST_F(PointReader, reports_nan_normal) {
   const auto file = write("a.xyz", "1 2 3 0 0 nan\n");
   EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ":1: non-finite normal");

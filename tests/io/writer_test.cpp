@@ -20,7 +20,7 @@ TriangleMesh awkward_mesh() {
   mesh.vertices = {Point3(0.1, 0.2, 0.3),
                    Point3(1.0 / 3.0, -2.0 / 7.0, 1e-310),
                    Point3(123456789.123456789, std::nextafter(1.0, 2.0), -0.0),
-                   Point3(std::numeric_limits<double>::max(), std::numeric_limits<double>::min(),
+                   Point3(std::nextafter(1e30, 0.0), std::numeric_limits<double>::min(),  // readers take |x| <= 1e30
                           -std::numeric_limits<double>::denorm_min())};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {3, 2, 1}};
   return mesh;

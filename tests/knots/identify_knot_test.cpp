@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <string>
 
 namespace envcrust::knots {
@@ -119,6 +120,28 @@ TEST(IdentifyKnot, KnotTypeNames) {
   EXPECT_EQ(to_string(KnotType::Trefoil), "trefoil");
   EXPECT_EQ(to_string(KnotType::FigureEight), "figure-eight");
   EXPECT_EQ(to_string(KnotType::Other), "other");
+  EXPECT_EQ(to_string(KnotType::Unknown), "unknown");
+}
+
+// A random polygon's projections have crossings by the thousand (200 random points in a cube:
+// the determinant would take hours); above the limit the curve is not read, at once.
+TEST(IdentifyKnot, DiagramsWithMoreCrossingsThanTheLimitAreUnknown) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Polyline tangle;
+  for (int i = 0; i < 200; ++i) tangle.emplace_back(unit(rng), unit(rng), unit(rng));
+  const KnotReport report = identify_knot(tangle);
+  EXPECT_EQ(report.type, KnotType::Unknown);
+  EXPECT_GT(report.crossings, 300);
+  EXPECT_EQ(report.alexander, "");
+  EXPECT_EQ(report.determinant, 0);
+  // The trefoil's diagram read under a limit of 3 crossings, and not under 2.
+  const Polyline trefoil = sample(test::trefoil, 300);
+  EXPECT_EQ(identify_knot(trefoil, {.max_crossings = 1000}).type, KnotType::Trefoil);
+  const KnotReport limited = identify_knot(trefoil, {.max_crossings = 2});
+  EXPECT_EQ(limited.type, KnotType::Unknown);
+  EXPECT_GE(limited.crossings, 3);
+  EXPECT_THROW(identify_knot(trefoil, {.max_crossings = -1}), InvalidOptions);
 }
 
 TEST(IdentifyKnot, TwoPointsAreRejectedWithTheirCount) {
