@@ -55,9 +55,13 @@ std::vector<double> distances_to_mesh(const std::vector<Point3>& points, const T
   const std::vector<std::size_t> order = mesh::hilbert_order(points);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024),
                     [&](const tbb::blocked_range<std::size_t>& r) {
+                      // Along the Hilbert order each query starts from the previous one's
+                      // closest point: the kd-tree of hints is asked once per block.
+                      Point3 hint = tree.closest_point(points[order[r.begin()]]);
                       for (std::size_t at = r.begin(); at != r.end(); ++at) {
                         const std::size_t i = order[at];
-                        d[i] = std::sqrt(tree.squared_distance(points[i]));
+                        hint = tree.closest_point(points[i], hint);
+                        d[i] = std::sqrt(CGAL::squared_distance(points[i], hint));
                       }
                     });
   return d;

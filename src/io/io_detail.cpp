@@ -88,14 +88,8 @@ bool parse_int(std::string_view token, std::int64_t& value) {
     return false;
   }
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (end != token.data() + token.size()) return false;
-  if (ec == std::errc::result_out_of_range) {
-    // A number beyond double's range ("1e999") reads as +-inf (the readers then say
-    // "non-finite"), one below it as its nearest double (0 or a subnormal), as strtod gives.
-    value = std::strtod(std::string(token).c_str(), nullptr);
-    return true;
-  }
-  return ec == std::errc();
+  // An integer beyond 64 bits is no integer the readers can use: refused, not wrapped.
+  return end == token.data() + token.size() && ec == std::errc();
 }
 
 void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {

@@ -78,6 +78,13 @@ TEST_F(OffReader, reports_vertex_with_wrong_column_count) {
             file.string() + ":4: expected 3 numbers for vertex 1, got 2");
 }
 
+TEST_F(OffReader, an_index_beyond_64_bits_is_not_an_index) {
+  // It read as -9223372036854775808 before (wrapped through a double).
+  const auto file = write("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999\n");
+  EXPECT_EQ(io_error_of([&] { read_polygon_mesh(file); }),
+            file.string() + ":6: expected a vertex index, got '99999999999999999999'");
+}
+
 TEST_F(OffReader, reports_a_coordinate_too_large_to_compute_with) {
   const auto file = write("a.off", "OFF\n3 1 0\n0 0 0\n1 -1e308 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(io_error_of([&] { read_polygon_mesh(file); }),
