@@ -26,6 +26,7 @@ struct BoundaryCommand {
   std::string output;
   std::string points_output;
   std::string reference;
+  bool no_knots = false;
   BuiltinSampling sampling;
   CommonFlags common;
 };
@@ -47,14 +48,15 @@ std::vector<std::pair<int, double>> nearest_curves(const std::vector<Polyline>& 
 
 // Each curve's vertices, length, knot type ("unknown", with a note, when the curve passes
 // through itself and no projection of it is generic), width and share sampled beyond.
-nlohmann::json curves_json(const LoadedSurface& loaded, double diagonal, std::vector<std::string>& notes) {
+nlohmann::json curves_json(const LoadedSurface& loaded, double diagonal, bool with_knots,
+                           std::vector<std::string>& notes) {
   nlohmann::json curves = nlohmann::json::array();
   const auto& detection = loaded.detection;
   for (std::size_t i = 0; i < loaded.samples.boundary.size(); ++i) {
     const Polyline line = loaded.samples.boundary[i].polyline();
     const double length = mesh::closed_length(line);
     nlohmann::json c = {{"vertices", line.size()}, {"length", length}, {"length_rel_diag", length / diagonal}};
-    if (line.size() >= 3) {
+    if (with_knots && line.size() >= 3) {
       try {
         c["knot"] = knots::to_string(knots::identify_knot(line).type);
       } catch (const Error& e) {
@@ -154,7 +156,7 @@ void run_boundary(BoundaryCommand& cmd) {
   std::vector<std::string> notes = loaded.notes;
   nlohmann::json j = {{"input", cmd.input}, {"source", loaded.source}, {"points", loaded.samples.points.size()},
                       {"diagonal", diagonal}};
-  j["curves"] = curves_json(loaded, diagonal, notes);
+  j["curves"] = curves_json(loaded, diagonal, !cmd.no_knots, notes);
   j["notes"] = notes;
   if (loaded.detection) {
     j["spacing"] = loaded.detection->spacing;
@@ -208,6 +210,7 @@ void register_boundary(CLI::App& app) {
   sub->add_option("-r,--reference", cmd->reference,
                   "True boundary to compare with: builtin:NAME, a NURBS patch or a mesh (its border loops); "
                   "builtin and NURBS inputs default to their own surface");
+  sub->add_flag("--no-knots", cmd->no_knots, "Skip the knot type of each curve (as analyze --no-knots)");
   sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));

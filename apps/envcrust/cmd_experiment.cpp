@@ -77,13 +77,22 @@ std::optional<experiments::ScanData> load_scan(const ExperimentCommand& cmd) {
   return scan;
 }
 
+// A missing font leaves the captions out (a warning); one FreeType cannot use is an error,
+// found before the experiments run.
 std::optional<render::Font> load_font(const std::string& path, std::vector<std::string>& warnings) {
+  render::Font font;
   try {
-    return render::Font{io::read_binary_file(path), 14};
+    font = render::Font{io::read_binary_file(path), 14};
   } catch (const IoError& e) {
     warnings.push_back(std::string("no captions: ") + e.what());
     return std::nullopt;
   }
+  try {
+    render::check_font(font);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(path + ": " + e.what());
+  }
+  return font;
 }
 
 void run_experiments(ExperimentCommand& cmd) {

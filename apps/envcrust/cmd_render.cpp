@@ -191,7 +191,13 @@ std::optional<render::Font> load_font(const RenderCommand& cmd, std::vector<std:
     warnings.push_back("font " + cmd.font + " not found: captions and title left out");
     return std::nullopt;
   }
-  return render::Font{io::read_binary_file(cmd.font), cmd.font_px};
+  render::Font font{io::read_binary_file(cmd.font), cmd.font_px};
+  try {
+    render::check_font(font);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(cmd.font + ": " + e.what());
+  }
+  return font;
 }
 
 void run_render(RenderCommand& cmd) {
@@ -231,6 +237,9 @@ void run_render(RenderCommand& cmd) {
       cmd.title = "distance to " + default_caption(cmd.error_reference) + ": blue 0, red " + short_number(*error_top) +
                   " or more";
   }
+  // The font is read and checked before the panels are drawn.
+  const bool is_grid = !(cmd.inputs.size() == 1 && cmd.title.empty() && cmd.captions.empty());
+  const std::optional<render::Font> font = is_grid ? load_font(cmd, warnings) : std::nullopt;
   std::vector<render::Panel> panels;
   nlohmann::json panel_reports = nlohmann::json::array();
   for (std::size_t i = 0; i < cmd.inputs.size(); ++i) {
@@ -251,19 +260,14 @@ void run_render(RenderCommand& cmd) {
 
   // A single input without title or explicit caption is the picture itself, at --size.
   render::Image picture;
-  if (panels.size() == 1 && cmd.title.empty() && cmd.captions.empty()) {
+  if (!is_grid) {
     picture = std::move(panels[0].image);
   } else {
     render::GridOptions grid;
     if (!cmd.grid.empty()) grid.rows = cmd.grid[0], grid.columns = cmd.grid[1];
     grid.title = cmd.title;
     grid.background = cmd.options.background;
-    const auto font = load_font(cmd, warnings);
-    try {
-      picture = render::compose_grid(panels, grid, font);
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(cmd.font + ": " + e.what());  // only the font can be bad here
-    }
+    picture = render::compose_grid(panels, grid, font);
   }
   io::write_png(cmd.output, picture);
 

@@ -107,6 +107,11 @@ struct Font {
   int pixel_height = 18;
 };
 
+/// Check that FreeType can use `font` at its size, before anything is drawn with it.
+/// @throws InvalidInput ("render: cannot use the font (FreeType error N)") or InvalidOptions
+///         for a pixel_height outside [4, 512].
+void check_font(const Font& font);
+
 /// One panel of a grid: an image and an optional caption drawn under it.
 struct Panel {
   Image image;

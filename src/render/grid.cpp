@@ -47,6 +47,12 @@ void blit(Image& target, const Image& source, int x0, int y0) {
 }
 
 /// Draw `text` centred in the band [x, x + width) x [y, y + height), shortened to fit.
+}  // namespace
+
+void check_font(const Font& font) { (void)detail::TextRenderer(font); }
+
+namespace {
+
 void draw_centred(detail::TextRenderer& text, Image& image, const std::string& line, int x, int y,
                   int width, int height, Color color) {
   const std::string shown = text.fit(line, width);

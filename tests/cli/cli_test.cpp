@@ -1258,6 +1258,15 @@ TEST_F(CliTest, boundary_finds_the_cylinder_rims_and_writes_them_back) {
 // quad split into two triangles whose corners are placed as a bowtie, so that two border
 // edges cross at (0.5, 0.5, 0). The report says "unknown" with a note; the command used to
 // stop with the knot code's error, naming no file.
+TEST_F(CliTest, boundary_no_knots_leaves_the_knot_types_out) {
+  const auto j = run_envcrust_json("boundary builtin:cylinder --seed 3 --no-knots --json");
+  ASSERT_EQ(j["curves"].size(), 2u);
+  for (const auto& c : j["curves"]) {
+    EXPECT_FALSE(c.contains("knot")) << c;
+    EXPECT_NEAR(c["length"].get<double>(), 2 * M_PI, 0.05 * 2 * M_PI);
+  }
+}
+
 TEST_F(CliTest, boundary_of_a_border_through_itself_has_an_unknown_knot_type) {
   {
     std::ofstream out(path("bowtie.off"));

@@ -87,6 +87,25 @@ TEST_F(CliTest, render_a_missing_font_leaves_captions_out_with_a_warning) {
   EXPECT_EQ(png_size(path("s.png")), std::make_pair(8u + 48u + 8u, 8u + 48u + 27u + 8u));
 }
 
+// A file that is no font is an error naming it, for render and experiment alike, found
+// before anything is drawn (the experiments ran first before, and the error named no file).
+TEST_F(CliTest, a_font_freetype_cannot_use_is_an_error_naming_the_file) {
+  {
+    std::ofstream out(path("bad.ttf"));
+    out << "not a font\n";
+  }
+  const std::string problem = path("bad.ttf") + ": render: cannot use the font (FreeType error ";
+  const auto r = run_envcrust("render builtin:square --size 48x48 --caption sq --font " + path("bad.ttf") + " -o " +
+                              path("s.png"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("envcrust: error: " + problem, 0), 0u) << r.err;
+  EXPECT_FALSE(fs::exists(path("s.png")));
+  const auto e = run_envcrust("experiment cylinder --quick --font " + path("bad.ttf") + " -q -o " + path("exp"));
+  EXPECT_EQ(e.exit_code, 1);
+  EXPECT_EQ(e.err.rfind("envcrust: error: " + problem, 0), 0u) << e.err;
+  EXPECT_FALSE(fs::exists(fs::path(path("exp")) / "cylinder"));
+}
+
 TEST_F(CliTest, render_bad_input_is_named_and_no_png_is_written) {
   const auto missing = run_envcrust("render " + path("missing.off") + " -o " + path("m.png"));
   EXPECT_EQ(missing.exit_code, 1);

@@ -20,6 +20,16 @@ TEST(Text, unparsable_font_bytes_are_refused) {
             "render: cannot use the font (FreeType error 2)");  // unknown file format
 }
 
+TEST(Text, check_font_refuses_what_freetype_cannot_use_before_drawing) {
+  const Font garbage{std::vector<std::uint8_t>(256, 'x')};
+  EXPECT_EQ(testing::message_of<InvalidInput>([&] { check_font(garbage); }),
+            "render: cannot use the font (FreeType error 2)");
+  const auto font = testing::test_font();
+  if (!font) GTEST_SKIP() << "font " << testing::kFontPath << " not installed";
+  EXPECT_NO_THROW(check_font(*font));
+  EXPECT_THROW(check_font(Font{font->data, 2}), InvalidOptions);  // 2 pixels high
+}
+
 TEST(Text, a_long_caption_is_shortened_to_its_cell) {
   const auto font = testing::test_font();
   if (!font) GTEST_SKIP() << "font " << testing::kFontPath << " not installed";
