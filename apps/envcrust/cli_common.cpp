@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -92,6 +93,18 @@ CLI::Validator whole_number_at_least(long long min) {
 
 CLI::Validator whole_number_in(long long min, long long max) {
   return whole_number(min, max, "in " + std::to_string(min) + ".." + std::to_string(max));
+}
+
+CLI::Validator seed_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [at, error] = std::from_chars(text.data(), end, value);
+        if (error == std::errc() && at == end) return "";
+        return "must be a whole number from 0 to 18446744073709551615 (got '" + text + "')";
+      },
+      "");
 }
 
 CLI::Validator number_above(double min, bool inclusive) {

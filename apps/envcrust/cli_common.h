@@ -46,6 +46,10 @@ CLI::Validator whole_number_at_least(long long min);
 /// The same with an upper bound: "must be a whole number in 1..100000000 (got '1e12')".
 CLI::Validator whole_number_in(long long min, long long max);
 
+/// A seed: a whole number from 0 to 2^64 - 1, as typed (CLI11 alone wraps -1 and saturates
+/// 99999999999999999999 without a word). Its description is empty: the help stays "UINT".
+CLI::Validator seed_number();
+
 /// Most points a command draws or measures with (-n, --samples): 1e8 points with normals
 /// take 4.8 GB before any stage runs; more fail to allocate on common machines.
 inline constexpr long long kMaxPointCount = 100'000'000;

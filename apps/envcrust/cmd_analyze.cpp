@@ -96,8 +96,8 @@ void register_analyze(CLI::App& app) {
                   "Area samples per side for distance measurement")
       ->capture_default_str()
       ->check(whole_number_in(0, kMaxPointCount));
-  sub->add_option("--seed", cmd->options.distance.seed, "Seed of the distance sampling")->capture_default_str();
-  sub->add_option("--knot-seed", cmd->options.knot.seed, "Seed of the knot projections")->capture_default_str();
+  sub->add_option("--seed", cmd->options.distance.seed, "Seed of the distance sampling")->check(seed_number())->capture_default_str();
+  sub->add_option("--knot-seed", cmd->options.knot.seed, "Seed of the knot projections")->check(seed_number())->capture_default_str();
   sub->add_option("--projections", cmd->options.knot.projections,
                   "Projections voted over for knot types")
       ->capture_default_str()

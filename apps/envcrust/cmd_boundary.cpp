@@ -217,7 +217,7 @@ void register_boundary(CLI::App& app) {
   sub->add_option("--noise", cmd->sampling.noise_rel_diag, "Gaussian noise on builtin:NAME and NURBS patch samples, fraction of the diagonal")
       ->capture_default_str()
       ->check(number_above(0, true));
-  sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();
+  sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->check(seed_number())->capture_default_str();
   add_boundary_options(*sub, cmd->sampling);
   add_outlier_options(*sub, cmd->sampling);
   add_common_flags(*sub, cmd->common);

@@ -183,7 +183,7 @@ void register_experiment(CLI::App& app) {
   sub->add_option("-o,--output", cmd->output, "Output folder");
   sub->add_flag("--list", cmd->list, "List the experiments and exit");
   sub->add_flag("--quick", cmd->options.use_quick_sizes, "Small sizes (seconds per experiment; for tests)");
-  sub->add_option("--seed", cmd->options.seed, "Seed of every sampling and perturbation")->capture_default_str();
+  sub->add_option("--seed", cmd->options.seed, "Seed of every sampling and perturbation")->check(seed_number())->capture_default_str();
   sub->add_option("--data-dir", cmd->data_dir, "Folder of the shared scan data (scan experiment)")
       ->capture_default_str();
   sub->add_option("--scan", cmd->scan, "Data set folder under --data-dir for the scan experiment (points.xyz)")

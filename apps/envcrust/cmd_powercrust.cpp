@@ -125,7 +125,7 @@ void register_powercrust(CLI::App& app) {
   sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
-  sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->capture_default_str();
+  sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->check(seed_number())->capture_default_str();
   const std::map<std::string, powercrust::LabelPreset> presets = {{"code", powercrust::LabelPreset::Code},
                                                                   {"readme", powercrust::LabelPreset::Readme}};
   sub->add_option("--preset", cmd->options.preset,

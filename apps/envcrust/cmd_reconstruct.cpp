@@ -83,7 +83,7 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "Gaussian noise on builtin:NAME and NURBS patch samples, fraction of the diagonal")
       ->capture_default_str()
       ->check(number_above(0, true));
-  sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->capture_default_str();
+  sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->check(seed_number())->capture_default_str();
   auto* no_boundary = sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
                                    "Point files: do not detect boundary curves (a closed surface)");
   add_boundary_options(sub, cmd.sampling)->excludes(no_boundary);

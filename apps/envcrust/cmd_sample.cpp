@@ -127,7 +127,7 @@ void register_sample(CLI::App& app) {
                                 "Gaussian noise sigma as a fraction of the bounding-box diagonal (0.0025 = 0.25%)")
                     ->capture_default_str();
   auto* normals = sub->add_flag("--normals", cmd->sampling.with_normals, "Write the exact unit normals too");
-  auto* seed = sub->add_option("--seed", cmd->sampling.seed, "Random seed (same seed, same points)")->capture_default_str();
+  auto* seed = sub->add_option("--seed", cmd->sampling.seed, "Random seed (same seed, same points)")->check(seed_number())->capture_default_str();
   sub->add_flag("--mesh", cmd->mesh, "Write the exact fine tessellation (ground truth) instead of points")
       ->excludes(count)
       ->excludes(noise)

@@ -217,6 +217,11 @@ TEST_F(CliTest, flags_out_of_range_name_the_flag_and_json_survives_any_file_name
       {"powercrust builtin:sphere --box-scale 1e12 -o " + path("c.ply"),
        "--box-scale: must be a number in (1, 1000] (got '1e12')"},
       {"reconstruct builtin:cylinder --rho inf -o " + path("c.ply"), "--rho must be 'auto' or a positive number (got 'inf')"},
+      // CLI11 alone wrapped -1 to 2^64 - 1 and saturated a seed beyond 64 bits.
+      {"sample sphere --seed -1 -o " + path("s.xyz"),
+       "--seed: must be a whole number from 0 to 18446744073709551615 (got '-1')"},
+      {"analyze " + path("s.xyz") + " --knot-seed 99999999999999999999",
+       "--knot-seed: must be a whole number from 0 to 18446744073709551615 (got '99999999999999999999')"},
   };
   for (const auto& [args, problem] : cases) {
     const auto r = run_envcrust(args);
