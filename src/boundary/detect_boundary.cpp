@@ -367,6 +367,8 @@ BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
   candidates.flagged.assign(points.size(), 0);
   candidates.strong.assign(points.size(), 0);
   candidates.conormals.assign(points.size(), Vector3(0, 0, 0));
+  std::vector<char> matched(points.size(), 0);
+  std::size_t matched_count = 0;
   for (std::size_t g = 0; g < given.points.size(); ++g) {
     const Point3& q = given.points[g];
     if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z())) {
@@ -380,12 +382,19 @@ BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
                          format_number(d / s) + " spacings from the nearest sample (at most " +
                          format_number(options.link_distance) + ")");
     }
+    if (!matched[i]) matched[i] = 1, ++matched_count;
     Vector3 c = given.has_normals() ? detail::unit_perpendicular(given.normals[g], normals[i]) : Vector3(0, 0, 0);
     if (c == Vector3(0, 0, 0)) c = centroid_conormal(points, normals[i], index.nearest(points[i], k), i);
     if (c == Vector3(0, 0, 0)) continue;  // no direction away from the neighbours: not a boundary
     if (!candidates.flagged[i]) candidates.conormals[i] = c;
     candidates.flagged[i] = candidates.strong[i] = 1;
   }
+  // A boundary is a curve along the rim: points on most of the samples are the surface itself
+  // (given as its own boundary, every sample made a curve vertex took 9.9 GB).
+  if (2 * matched_count > points.size())
+    throw InvalidInput("the " + std::to_string(given.points.size()) + " boundary points given fall on " +
+                       std::to_string(matched_count) + " of the " + std::to_string(points.size()) +
+                       " samples, more than half: a boundary is the rim of the surface, not the surface");
   // Given points may be spaced unevenly: the NN-crust joins each to its curve neighbours.
   const detail::GivenCurves given_curves = detail::order_given_points(points, candidates, s);
   build_curves(points, normals, index, candidates, options, given_curves.components, given_curves.centrelines,

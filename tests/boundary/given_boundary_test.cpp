@@ -187,6 +187,14 @@ TEST(GivenBoundary, RefusesBadInput) {
   PointSet wrong_normals = every_kth(cloud.truth, 8);
   wrong_normals.normals.assign(2, Vector3(1, 0, 0));
   EXPECT_THROW(boundary::boundary_from_points(cloud.samples.points, cloud.normal_lines, wrong_normals), InvalidInput);
+  // The samples given as their own boundary.
+  try {
+    boundary::boundary_from_points(cloud.samples.points, cloud.normal_lines, cloud.samples);
+    FAIL() << "the samples were accepted as their own boundary";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "the 2000 boundary points given fall on 2000 of the 2000 samples, more than half: a "
+                           "boundary is the rim of the surface, not the surface");
+  }
   PointSet nan = every_kth(cloud.truth, 8);
   nan.points[0] = Point3(std::nan(""), 0, 0);
   EXPECT_THROW(boundary::boundary_from_points(cloud.samples.points, cloud.normal_lines, nan), InvalidInput);
