@@ -27,10 +27,6 @@ std::string knot_text(const knots::KnotReport& k) {
   return knots::to_string(k.type) + " (Alexander " + k.alexander + ")";
 }
 
-namespace {
-
-}  // namespace
-
 nlohmann::json knot_json(const knots::KnotReport& k) {
   const bool read = k.type != knots::KnotType::Unknown;
   return {{"type", knots::to_string(k.type)},

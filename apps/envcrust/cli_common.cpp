@@ -1,6 +1,8 @@
 // Common flags, the terminal progress bar and output helpers of the CLI.
 #include "cli_common.h"
 
+#include "envcrust/io.h"
+
 #include <unistd.h>
 
 #include <charconv>
@@ -93,6 +95,16 @@ CLI::Validator whole_number_at_least(long long min) {
 
 CLI::Validator whole_number_in(long long min, long long max) {
   return whole_number(min, max, "in " + std::to_string(min) + ".." + std::to_string(max));
+}
+
+render::Font read_checked_font(const std::string& path, int pixel_height) {
+  render::Font font{io::read_binary_file(path), pixel_height};
+  try {
+    render::check_font(font);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(path + ": " + e.what());
+  }
+  return font;
 }
 
 CLI::Validator seed_number() {

@@ -3,6 +3,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/progress.h"
+#include "envcrust/render.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -45,6 +46,10 @@ CLI::Validator whole_number_at_least(long long min);
 
 /// The same with an upper bound: "must be a whole number in 1..100000000 (got '1e12')".
 CLI::Validator whole_number_in(long long min, long long max);
+
+/// The font file `path` read and checked for captions at `pixel_height`.
+/// @throws IoError when it cannot be read; InvalidInput naming it when FreeType cannot use it.
+render::Font read_checked_font(const std::string& path, int pixel_height);
 
 /// A seed: a whole number from 0 to 2^64 - 1, as typed (CLI11 alone wraps -1 and saturates
 /// 99999999999999999999 without a word). Its description is empty: the help stays "UINT".

@@ -80,19 +80,12 @@ std::optional<experiments::ScanData> load_scan(const ExperimentCommand& cmd) {
 // A missing font leaves the captions out (a warning); one FreeType cannot use is an error,
 // found before the experiments run.
 std::optional<render::Font> load_font(const std::string& path, std::vector<std::string>& warnings) {
-  render::Font font;
   try {
-    font = render::Font{io::read_binary_file(path), 14};
+    return read_checked_font(path, 14);
   } catch (const IoError& e) {
     warnings.push_back(std::string("no captions: ") + e.what());
     return std::nullopt;
   }
-  try {
-    render::check_font(font);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(path + ": " + e.what());
-  }
-  return font;
 }
 
 void run_experiments(ExperimentCommand& cmd) {

@@ -191,13 +191,7 @@ std::optional<render::Font> load_font(const RenderCommand& cmd, std::vector<std:
     warnings.push_back("font " + cmd.font + " not found: captions and title left out");
     return std::nullopt;
   }
-  render::Font font{io::read_binary_file(cmd.font), cmd.font_px};
-  try {
-    render::check_font(font);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(cmd.font + ": " + e.what());
-  }
-  return font;
+  return read_checked_font(cmd.font, cmd.font_px);
 }
 
 void run_render(RenderCommand& cmd) {
