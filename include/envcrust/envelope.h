@@ -42,6 +42,8 @@ class CreaseDistance {
   CreaseDistance& operator=(const CreaseDistance&) = delete;
   [[nodiscard]] bool empty() const { return tree_ == nullptr; }
   [[nodiscard]] double operator()(const Point3& p) const;
+  /// The wedge bisector of the segment nearest p (CreaseSegment::wedge). @pre !empty()
+  [[nodiscard]] Vector3 nearest_wedge(const Point3& p) const;
 
  private:
   struct Tree;

@@ -65,6 +65,10 @@ TriangleMesh triangulate_polygons(const PolygonMesh& mesh);
 /// triangle uses. Triangle indices are remapped; triangle order is kept.
 TriangleMesh weld_identical_vertices(const TriangleMesh& mesh);
 
+/// The number of distinct vertex indices the triangles use (what weld_identical_vertices
+/// keeps when no two of them coincide).
+std::size_t used_vertex_count(const TriangleMesh& mesh);
+
 /// Where a triangle mesh passes through itself: face pairs that meet other than along the
 /// vertices and the edge they share (coincident vertices count as shared). A 2-manifold
 /// mesh without them is an embedded surface.

@@ -2,6 +2,7 @@
 // average sample spacing of a point cloud (METHOD.md sections 1 and 3.3b).
 #pragma once
 
+#include "envcrust/mesh.h"
 #include "envcrust/types.h"
 
 #include <vector>
@@ -63,5 +64,31 @@ std::vector<Vector3> estimate_normal_lines(const std::vector<Point3>& points,
 /// gets its usual outward/inward normals); a vertex without a non-degenerate face gets (0,0,0).
 /// @throws InvalidInput if a face has a vertex index out of range.
 std::vector<Vector3> mesh_vertex_normal_lines(const TriangleMesh& mesh);
+
+/// Options of point_creases.
+struct PointCreaseOptions {
+  double min_bend_deg = 80.0;  ///< report bends above this (0 flat, 180 folded back), in (0, 180)
+  /// Normal lines of a pair must make at least this angle for their planes to meet in a
+  /// well-defined line; bends above 180 minus it (plates folded nearly flat) are not found.
+  double min_line_angle_deg = 30.0;
+  /// The bend read from the positions (the angle between the half-planes through the two
+  /// samples) and from the normal lines must agree within this (a noisy normal on a smooth
+  /// part reads a line angle that the positions do not bear out).
+  double max_disagreement_deg = 20.0;
+  int neighbors = 10;  ///< pairs are formed with the k nearest neighbours, k >= 1
+};
+
+/// Sharp creases of a sampled surface, from samples with normal lines that jump across them
+/// (normals given with a scan of a CAD part, or exact ones): every pair of near neighbours
+/// whose tangent planes meet in a line between them, bent by more than `min_bend_deg`, gives
+/// a segment of that line as long as the pair is apart, with the wedge bisector (from the
+/// line into the wedge between the two half-planes). `total_length` is the length of the
+/// creases found (a minimum spanning forest of the segments' midpoints, links up to 3 times
+/// the pairs' median length), `max_bend_deg` the largest bend among them. Estimated normals (PCA) turn smoothly
+/// across a crease and seldom jump enough to be read here.
+/// @pre normal_lines.size() == points.size(), unit vectors (sign meaningless).
+/// @throws InvalidOptions naming the field and value.
+mesh::SharpEdges point_creases(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
+                               const PointCreaseOptions& options = {});
 
 }  // namespace envcrust::normals

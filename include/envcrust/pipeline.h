@@ -78,6 +78,9 @@ struct ReconstructOptions {
 struct InputKind {
   bool is_builtin = true;              ///< drawn from a built-in surface (false: a point file or mesh, a "scan")
   bool are_normals_estimated = false;  ///< normal lines estimated from the points, not given
+  /// Estimated normal lines turned to agree with normals the file gave (and set aside for
+  /// jumping across sharp creases): their signs still say which way the output faces.
+  bool are_signs_given = false;
   std::optional<bool> is_orientable;   ///< a mesh input's own; unknown for point files and built-in samples
   std::optional<long> genus;           ///< a mesh input's own, handles and cross-caps summed over components
   bool is_boundary_detected = false;   ///< boundary curves detected from the points (maybe false ones)

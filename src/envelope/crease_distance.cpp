@@ -15,13 +15,14 @@ struct CreaseDistance::Tree {
   using Primitive = CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator>;
   using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
   std::vector<Segment> segments;
+  std::vector<Vector3> wedges;  // per segment
   AabbTree tree;
 };
 
 CreaseDistance::CreaseDistance(const std::vector<CreaseSegment>& creases) {
   auto tree = std::make_unique<Tree>();
   for (const auto& c : creases)
-    if (c.a != c.b) tree->segments.emplace_back(c.a, c.b);
+    if (c.a != c.b) tree->segments.emplace_back(c.a, c.b), tree->wedges.push_back(c.wedge);
   if (tree->segments.empty()) return;
   tree->tree.insert(tree->segments.cbegin(), tree->segments.cend());
   tree->tree.build();
@@ -34,6 +35,11 @@ CreaseDistance::~CreaseDistance() = default;
 double CreaseDistance::operator()(const Point3& p) const {
   if (!tree_) return std::numeric_limits<double>::infinity();
   return std::sqrt(tree_->tree.squared_distance(p));
+}
+
+Vector3 CreaseDistance::nearest_wedge(const Point3& p) const {
+  const auto [point, primitive] = tree_->tree.closest_point_and_primitive(p);
+  return tree_->wedges[static_cast<std::size_t>(primitive - tree_->segments.cbegin())];
 }
 
 }  // namespace envcrust::envelope

@@ -32,6 +32,9 @@ using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 
 constexpr Index kUnused = std::numeric_limits<Index>::max();
+// |u . w| below this: a sample's offset direction u is square to the crease's bisector w, on
+// neither side (a right-angled crease's samples read 0.71).
+constexpr double kUndecidedSide = 0.1;
 
 // The creases whose wedge is open at the scale of rho: a ball of radius 0.9 rho centred
 // 2 rho along the wedge's bisector is clear of M (faces meeting at 54 degrees or more, with
@@ -112,12 +115,19 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
   const envelope::CreaseDistance creases(has_creases ? open_creases(*folds.creases, samples, *generator_index)
                                                      : std::vector<CreaseSegment>{});
   std::vector<double> max_fold_dot(samples.size(), global_fold_dot);
+  // Near a crease, the side of M each sample lies on: +1 in the wedge (its offset direction
+  // into the wedge of the crease nearest its generator), -1 outside, 0 undecided (square to
+  // the bisector). The nearest crease of a face's generator is one of that face's own, also
+  // at a corner where three creases meet.
+  std::vector<signed char> crease_side(samples.size(), 0);
   if (!creases.empty()) {
     const double crease_dot = fold_dot(folds.crease_min_angle_deg);
     tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
       const double rho = std::sqrt(CGAL::squared_distance(samples[i].position, samples[i].generator));
-      if (creases(samples[i].generator) <= folds.crease_reach_rel_rho * rho)
-        max_fold_dot[i] = std::max(max_fold_dot[i], crease_dot);
+      if (!(creases(samples[i].generator) <= folds.crease_reach_rel_rho * rho)) return;
+      max_fold_dot[i] = std::max(max_fold_dot[i], crease_dot);
+      const double into = samples[i].direction * creases.nearest_wedge(samples[i].generator);
+      crease_side[i] = into > kUndecidedSide ? 1 : into < -kUndecidedSide ? -1 : 0;
     });
   }
   const bool use_folds = std::any_of(max_fold_dot.begin(), max_fold_dot.end(), [](double d) { return d > -2.0; });
@@ -125,17 +135,25 @@ RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_ang
     if (!use_folds || dot > std::max(max_fold_dot[p], max_fold_dot[q])) return false;
     const double rho = std::sqrt(std::min(CGAL::squared_distance(samples[p].position, samples[p].generator),
                                           CGAL::squared_distance(samples[q].position, samples[q].generator)));
-    // A pair only a crease lets in must cross M by the crease: in a groove narrower than
-    // rho, pairs between the walls' sheets also cross M, but away from the crease line.
-    const bool crease_only = dot > global_fold_dot;
+    const Point3& a = samples[p].position;
+    const Point3& b = samples[q].position;
     constexpr int kSteps = 16;
-    for (int k = 1; k < kSteps; ++k) {
-      const double t = static_cast<double>(k) / kSteps;
-      const Point3 x = samples[p].position + t * (samples[q].position - samples[p].position);
-      if (generator_index->any_within(x, folds.clearance_rel_rho * rho))
-        return !crease_only || creases(x) <= folds.crease_reach_rel_rho * rho;
+    if (dot <= global_fold_dot) {
+      for (int k = 1; k < kSteps; ++k) {
+        const double t = static_cast<double>(k) / kSteps;
+        if (generator_index->any_within(a + t * (b - a), folds.clearance_rel_rho * rho)) return true;
+      }
+      return false;
     }
-    return false;
+    // A pair only a crease lets in must cross M by the crease: one end in the wedge, the
+    // other outside, and its midpoint within crease_reach_rel_rho rho of the crease (in a
+    // groove narrower than rho, pairs between the walls' sheets also cross M, but away from
+    // the crease line). The fin of the envelope's inner medial axis joins two samples in the
+    // wedge, and a pair round the convex side two outside (its segment passes through the
+    // wedge, in through one face and out through the other). Unlike a test of the segment's
+    // distance to the generators, this one needs no generators closer together than rho.
+    if (crease_side[p] * crease_side[q] >= 0) return false;
+    return creases(CGAL::midpoint(a, b)) <= folds.crease_reach_rel_rho * rho;
   };
   RawSheet sheet;
   struct CrossingEdge {

@@ -52,6 +52,14 @@ TriangleMesh weld_identical_vertices(const TriangleMesh& mesh) {
   return out;
 }
 
+std::size_t used_vertex_count(const TriangleMesh& mesh) {
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& t : mesh.triangles)
+    for (Index v : t)
+      if (v < used.size()) used[v] = 1;
+  return static_cast<std::size_t>(std::count(used.begin(), used.end(), char{1}));
+}
+
 std::vector<char> repeated_or_degenerate_faces(const TriangleMesh& mesh) {
   std::vector<std::pair<std::array<Index, 3>, std::size_t>> keys;
   keys.reserve(mesh.triangles.size());

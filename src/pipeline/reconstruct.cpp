@@ -46,7 +46,7 @@ TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
 ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions options) {
   if (input.are_normals_estimated) {
     options.envelope.reach_quantile = 0.05;
-    options.use_normal_orientation = false;
+    options.use_normal_orientation = input.are_signs_given;
   }
   if (!input.is_builtin) {
     const bool is_point_file = !input.is_orientable.has_value();

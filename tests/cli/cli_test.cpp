@@ -1337,3 +1337,77 @@ TEST_F(CliTest, reconstruct_joins_a_mesh_across_a_sharp_crease) {
   EXPECT_EQ(mild["analysis"]["boundary_loops"], 1);
   EXPECT_EQ(mild["analysis"]["components"], 1);
 }
+
+// A mesh whose faces repeat their vertices along seams (five separate grids of the open box,
+// as exporters that split vertices write them) is welded first, as the analyzer welds it:
+// one disc with the rim as its loop, not five squares with a false border along every seam.
+TEST_F(CliTest, reconstruct_welds_a_mesh_whose_faces_repeat_their_vertices) {
+  const envcrust::TriangleMesh faces = envcrust::fixtures::open_box_faces(12);
+  envcrust::io::write_mesh(path("box_faces.off"), faces);
+  const auto j = run_envcrust_json("reconstruct " + path("box_faces.off") + " -o " + path("box_faces.ply") + " --json");
+  // 5 x 13^2 vertices given; the open box's 12-grid has 6 x 13^2 - 12 x 13 + 8 = 866 on the
+  // closed cube, less the top's 11^2 inner ones: 745.
+  const std::size_t repeated = faces.vertices.size() - (6 * 169 - 12 * 13 + 8 - 121);
+  bool named = false;
+  for (const auto& n : j["notes"])
+    if (n.get<std::string>() == std::to_string(repeated) + " vertices at the coordinates of another welded to it") named = true;
+  EXPECT_TRUE(named) << j["notes"].dump();
+  EXPECT_EQ(j["input_boundary_curves"], 1) << j.dump();
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 1);
+  EXPECT_EQ(j["analysis"]["components"], 1);
+  EXPECT_EQ(j["analysis"]["is_manifold"], true);
+  // The creases and corners are rounded off within rho (0.087, 5% of the diagonal 1.73; the
+  // worst place is a corner of the rim, where a crease meets the border).
+  const double rho_rel_diag = j["envelope"]["rho"].get<double>() / std::sqrt(3.0);
+  EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), rho_rel_diag);
+  EXPECT_LT(j["analysis"]["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), rho_rel_diag);
+}
+
+// A point file whose normals jump across sharp creases (an open box with each face's exact
+// normal) gets a note naming the creases, and fitted normal lines, which round them off,
+// replace the file's: one disc close to the box. The file's normals jumping at the box's
+// edges used to tear the sheet there (10,000 points: 4 closed pieces, chi 8, 14% off, 88 s).
+TEST_F(CliTest, reconstruct_rounds_off_the_creases_a_point_file_s_normals_jump_across) {
+  const envcrust::PointSet samples = envcrust::fixtures::open_box_samples(5000, 5);
+  envcrust::io::write_points(path("box.xyz"), samples);
+  envcrust::io::write_mesh(path("box_truth.off"), envcrust::fixtures::open_box_faces(40));
+  const auto j = run_envcrust_json("reconstruct " + path("box.xyz") + " -r " + path("box_truth.off") + " -o " +
+                                   path("box_points.ply") + " --json");
+  std::vector<std::string> notes;
+  for (const auto& n : j["notes"]) notes.push_back(n.get<std::string>());
+  const std::string jump = "the normals given jump by more than 80 degrees across ";
+  ASSERT_TRUE(std::any_of(notes.begin(), notes.end(), [&](const std::string& n) {
+    return n.rfind(jump, 0) == 0 && n.find("): sharp creases, which fitted normal lines round off; the file's are not used") !=
+                                        std::string::npos;
+  })) << j["notes"].dump();
+  EXPECT_TRUE(std::find(notes.begin(), notes.end(), "normal lines estimated by PCA over 24 neighbours") != notes.end());
+  EXPECT_EQ(j["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(j["analysis"]["boundary_loops"], 1);
+  EXPECT_EQ(j["analysis"]["components"], 1);
+  EXPECT_EQ(j["analysis"]["is_manifold"], true);
+  EXPECT_LT(j["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
+  // The true surface to the result: the rim lies up to this far from the nearest sample.
+  double rim_gap = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double t = (k % 100) / 100.0;
+    const int side = k / 100;
+    const envcrust::Point3 rim = side == 0 ? envcrust::Point3(t, 0, 1) : side == 1 ? envcrust::Point3(1, t, 1)
+                               : side == 2 ? envcrust::Point3(1 - t, 1, 1) : envcrust::Point3(0, 1 - t, 1);
+    double nearest = 1e300;
+    for (const auto& p : samples.points) nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(p, rim)));
+    rim_gap = std::max(rim_gap, nearest);
+  }
+  const double diagonal = std::sqrt(3.0);
+  EXPECT_LT(j["analysis"]["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(),
+            std::max(0.025, 1.1 * rim_gap / diagonal));
+  // Without normals the same points read no crease and come out alike.
+  envcrust::PointSet bare = samples;
+  bare.normals.clear();
+  envcrust::io::write_points(path("box_bare.xyz"), bare);
+  const auto plain = run_envcrust_json("reconstruct " + path("box_bare.xyz") + " -r " + path("box_truth.off") +
+                                       " -o " + path("box_bare.ply") + " --json");
+  for (const auto& n : plain["notes"]) EXPECT_EQ(n.get<std::string>().find("jump by more than"), std::string::npos);
+  EXPECT_EQ(plain["analysis"]["euler_characteristic"], 1);
+  EXPECT_EQ(plain["analysis"]["boundary_loops"], 1);
+}
