@@ -220,6 +220,7 @@ void register_boundary(CLI::App& app) {
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->check(seed_number())->capture_default_str();
   add_boundary_options(*sub, cmd->sampling);
   add_outlier_options(*sub, cmd->sampling);
+  add_crease_options(*sub, cmd->sampling);
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_boundary(*cmd); });
 }

@@ -112,6 +112,7 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "per file (FILE.i.polyline when several), or .xyz/.ply, all vertices as one point file "
                  "(normals = outward conormals)");
   add_outlier_options(sub, cmd.sampling);
+  add_crease_options(sub, cmd.sampling);
   sub.add_option("--outliers-out", cmd.outliers_output,
                  "Also write the stray samples removed from a point file (.xyz/.ply; none: an empty file)");
 }

@@ -38,22 +38,32 @@ bool is_long_crease(const mesh::SharpEdges& sharp, const std::vector<Point3>& po
   return sharp.count > 0 && sharp.total_length > kCreaseMinLengthRelDiag * mesh::bbox_diagonal(points);
 }
 
-// A mesh's sharp creases, as the samples carry them (SurfaceSamples::creases), and a note that
-// says where they are.
-void add_creases(mesh::SharpEdges sharp, const std::vector<Point3>& points, LoadedSurface& out) {
-  if (!is_long_crease(sharp, points)) return;
-  std::ostringstream w;
-  w << std::setprecision(3) << "the mesh bends by more than " << kTearingBendDeg << " degrees across " << sharp.count
-    << " edges (" << sharp.total_length << " long in all, up to " << sharp.max_bend_deg
-    << " degrees near (" << sharp.sharpest->x() << ", " << sharp.sharpest->y() << ", " << sharp.sharpest->z()
-    << ")): creases, left out of the reach estimate and joined across by the sheet";
-  out.notes.push_back(w.str());
-  out.samples.creases = std::move(sharp.segments);
+// Normal lines fitted to the samples (PCA over 24 neighbours), each turned to agree with the
+// sample's given normal: they turn across a crease where the given ones jump.
+std::vector<Vector3> fitted_like(const std::vector<Point3>& points, const std::vector<Vector3>& given) {
+  std::vector<Vector3> fitted = normals::estimate_normal_lines(points);
+  for (std::size_t i = 0; i < fitted.size(); ++i)
+    if (fitted[i] * given[i] < 0) fitted[i] = -fitted[i];
+  return fitted;
 }
+
+// "the mesh bends by more than 80 degrees across 96 edges (8 long in all, up to 90 degrees
+// near (x, y, z)): creases, " and what is done with them.
+std::string crease_note(const std::string& what, const mesh::SharpEdges& sharp, const std::string& across,
+                        const std::string& done) {
+  std::ostringstream w;
+  w << std::setprecision(3) << what << " by more than " << kTearingBendDeg << " degrees across " << sharp.count << " "
+    << across << " (" << sharp.total_length << " long in all, up to " << sharp.max_bend_deg << " degrees near ("
+    << sharp.sharpest->x() << ", " << sharp.sharpest->y() << ", " << sharp.sharpest->z() << ")): creases, " << done;
+  return w.str();
+}
+
+constexpr const char* kRoundedOff = "which fitted normal lines round off (--creases join: joined across by the sheet)";
+constexpr const char* kJoined = "left out of the reach estimate and joined across by the sheet";
 
 // Vertices with their area-weighted normal lines, plus face centres with face normals (the
 // faces carry the surface between vertices), and the mesh's border loops with frames.
-void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface& out) {
+void load_mesh_samples(TriangleMesh mesh, const std::string& spec, bool join_creases, LoadedSurface& out) {
   if (mesh.triangles.empty()) throw InvalidInput(spec + ": the mesh has no faces");
   naming_input(spec, [&] { mesh::check_coordinates(mesh.vertices, "vertex"); });
   out.source = "mesh";
@@ -87,7 +97,8 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
     out.samples.points.push_back(mesh.vertices[v]);
     out.samples.normals.push_back(vertex_normals[v]);
   }
-  for (const auto& t : mesh.triangles) {
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
     const Point3& a = mesh.vertices[t[0]];
     const Point3& b = mesh.vertices[t[1]];
     const Point3& c = mesh.vertices[t[2]];
@@ -100,7 +111,19 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, LoadedSurface
   if (out.samples.points.empty()) throw InvalidInput(spec + ": the mesh has no face of positive area");
   out.notes.push_back("mesh vertices and face centres; " + std::to_string(out.samples.boundary.size()) +
                       " border loops");
-  add_creases(mesh::sharp_edges(mesh, kTearingBendDeg), mesh.vertices, out);
+  // Long sharp creases: rounded off by fitted normal lines (the measurements are in
+  // docs/reconstruct.md, sharp creases; normal lines smoothed along the mesh over 1-3 rings
+  // of faces instead, summed as oriented vectors, read 2.6-7.9% / 3.6-7.3% on the open box of
+  // 12 x 12 grids, each after the adaptive retry, where the fitted ones read 1.1% / 2.0%), or
+  // joined by the sheet.
+  auto sharp = mesh::sharp_edges(mesh, kTearingBendDeg);
+  if (!is_long_crease(sharp, mesh.vertices)) return;
+  out.notes.push_back(crease_note("the mesh bends", sharp, "edges", join_creases ? kJoined : kRoundedOff));
+  if (join_creases) {
+    out.samples.creases = std::move(sharp.segments);
+  } else {
+    out.samples.normals = fitted_like(out.samples.points, out.samples.normals);
+  }
 }
 
 // The points of every --boundary file: a point file, or a closed curve (.polyline). Their
@@ -210,46 +233,39 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
     }
   }
   out.kind.is_builtin = false;
-  // Normals given with the points jump across a sharp crease (fitted ones turn smoothly and
-  // are not read so): where the file's jump along creases, fitted normal lines replace them
-  // all. The envelope of the surface so rounded off is reconstructed closer to the creased
-  // surface than its creased envelope is, and with a larger rho: measured on an open box
+  // Normals given with the points may jump across sharp creases (fitted ones turn smoothly
+  // and are not read so). Rounded off (the default), fitted normal lines replace the file's
+  // all: the envelope of the surface so rounded off is reconstructed closer to the creased
+  // surface than its creased envelope is, and with a larger rho. Measured on an open box
   // sampled with exact normals (docs/reconstruct.md, sharp creases), 10,000 points 1.14% /
   // 2.40% of the diagonal instead of 2.25% / 2.46% with the creases joined by the sheet, and
   // 1.94% / 2.40% with fitted normals only near the creases (the seam between them reads as
   // curvature: rho 0.021 instead of 0.027); 40,000 points 0.83% / 1.17% in 75 s instead of
   // 1.62% / 2.06% in 162 s and 0.89% / 1.17% in 228 s.
-  std::optional<std::string> crease_note;
-  std::vector<Vector3> given_normals;
+  std::optional<std::string> rounded_note;
   if (points.has_normals()) {
     progress.report("input: creases", 0.2);
     normals::PointCreaseOptions o;
     o.min_bend_deg = kTearingBendDeg;
-    const auto sharp = normals::point_creases(points.points, points.normals, o);
+    auto sharp = normals::point_creases(points.points, points.normals, o);
+    out.notes.push_back("normal lines from the file");
     if (is_long_crease(sharp, points.points)) {
-      std::ostringstream w;
-      w << std::setprecision(3) << "the normals given jump by more than " << kTearingBendDeg << " degrees across "
-        << sharp.count << " neighbour pairs (" << sharp.total_length << " long in all, up to " << sharp.max_bend_deg
-        << " degrees near (" << sharp.sharpest->x() << ", " << sharp.sharpest->y() << ", " << sharp.sharpest->z()
-        << ")): sharp creases, which fitted normal lines round off; the file's are not used";
-      crease_note = w.str();
-      given_normals = std::move(points.normals);
-      points.normals.clear();
-    } else {
-      out.notes.push_back("normal lines from the file");
+      if (sampling.join_creases) {
+        out.notes.push_back(crease_note("the normals given jump", sharp, "neighbour pairs", kJoined));
+        out.samples.creases = std::move(sharp.segments);
+      } else {
+        out.notes.push_back(crease_note("the normals given jump", sharp, "neighbour pairs", kRoundedOff));
+        progress.report("input: normals", 0.3);
+        points.normals = fitted_like(points.points, points.normals);
+        out.kind.are_normals_estimated = true;
+        out.kind.are_signs_given = true;  // the fitted lines face like the file's normals
+      }
     }
-  }
-  if (!points.has_normals()) {
+  } else {
     progress.report("input: normals", 0.3);
     normals::NormalOptions o;
     points.normals = normals::estimate_normal_lines(points.points, o);
     out.kind.are_normals_estimated = true;
-    if (!given_normals.empty()) {  // the fitted lines face like the file's normals
-      for (std::size_t i = 0; i < points.normals.size(); ++i)
-        if (points.normals[i] * given_normals[i] < 0) points.normals[i] = -points.normals[i];
-      out.kind.are_signs_given = true;
-    }
-    if (crease_note) out.notes.push_back(*crease_note);
     out.notes.push_back("normal lines estimated by PCA over " + std::to_string(o.neighbors) + " neighbours");
   }
   out.samples.points = std::move(points.points);
@@ -320,6 +336,15 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
   return given;
 }
 
+void add_crease_options(CLI::App& sub, BuiltinSampling& sampling) {
+  sub.add_option_function<std::string>(
+         "--creases", [&sampling](const std::string& mode) { sampling.join_creases = mode == "join"; },
+         "Meshes bent, and point files whose normals jump, by more than 80 degrees along creases longer in all "
+         "than a tenth of the diagonal: round (fitted normal lines round the creases off; closer to the creased "
+         "surface) or join (the normals kept, the sheet joined across the creases) [round]")
+      ->check(CLI::IsMember({"round", "join"}));
+}
+
 void add_outlier_options(CLI::App& sub, BuiltinSampling& sampling) {
   sub.add_flag("--keep-outliers", [&sampling](std::int64_t) { sampling.remove_outliers = false; },
                "Point files: keep the stray samples that are otherwise removed first (points farther from the "
@@ -379,7 +404,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   if (mesh) {
     if (!sampling.boundary_files.empty())
       throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
-    load_mesh_samples(std::move(*mesh), spec, out);
+    load_mesh_samples(std::move(*mesh), spec, sampling.join_creases, out);
     return out;
   }
   if (sampling.mesh_as_points) throw UsageError("--as-points applies to mesh files: " + spec + " has no faces");

@@ -33,6 +33,11 @@ struct BuiltinSampling {
   boundary::BoundaryOptions boundary;  ///< point files: options of the boundary detector
   /// Point files: drop the stray samples outliers::find_outliers flags before anything else.
   bool remove_outliers = true;
+  /// Meshes bent, and point files whose normals jump, by more than 80 degrees along creases
+  /// longer in all than a tenth of the diagonal: false (`--creases round`) replaces the
+  /// normals by fitted normal lines, which round the creases off; true (`--creases join`)
+  /// keeps them and hands the creases to the envelope and the sheet (SurfaceSamples::creases).
+  bool join_creases = false;
 };
 
 /// Samples of M and how they were obtained (for the report). Point files get their normal
@@ -59,6 +64,9 @@ struct LoadedSurface {
 /// Add the point-file boundary flags shared by reconstruct, envelope and boundary: --boundary,
 /// --boundary-min-width, --no-boundary-outer-fit. Returns the --boundary option.
 CLI::Option* add_boundary_options(CLI::App& command, BuiltinSampling& sampling);
+
+/// `--creases round|join` (BuiltinSampling::join_creases).
+void add_crease_options(CLI::App& command, BuiltinSampling& sampling);
 
 /// Add --keep-outliers (point files: keep the samples find_outliers flags).
 void add_outlier_options(CLI::App& command, BuiltinSampling& sampling);

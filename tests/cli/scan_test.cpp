@@ -95,30 +95,35 @@ TEST_F(CliTest, issue_5_bunny_with_adaptive_rho_is_one_genus_0_piece) {
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.025);
 }
 
-// The lion head as a mesh (a disc whose density varies 20x): the automatic uniform rho,
-// raised to bridge its sparse parts, gave genus 3-8 and the run was repeated with adaptive
-// rho. Since the sheet's self-intersections are repaired (30,386 face pairs: most relaxed,
-// the rest cut out with the handles they sat on and closed), the uniform run is already the
-// input's disc, so it is kept without a retry (measured 4.9% and 6.0% of the diagonal: ears
-// and mouth cut and closed; 520 crossing pairs are left after 3 cut rounds, 2,150 after
-// one, which the report counts).
+// The lion head as a mesh (a disc whose density varies 20x; its ears are plates thinner than
+// rho, their rims folded by up to 133 degrees). Its 101 sharp edges (1.1 long) are rounded off
+// by fitted normal lines, whose neighbourhoods span the ears' two sides: the uniform run at
+// the automatic rho (raised to 0.0141 to bridge the sparse parts) is empty, and the adaptive
+// retry (rho up to 0.028) is kept, the input's disc with its ears and mouth cut and closed:
+// measured 3.46% / 5.27% of the diagonal, 1,891 crossing pairs found in the sheet and 440
+// left (with the creases joined by the sheet, --creases join: the uniform run a disc, 4.40% /
+// 5.98%, 504 left).
 TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "cgal_lion_head";
   if (!std::filesystem::exists(folder / "lion-head.off")) GTEST_SKIP() << "no " << folder;
   const std::string mesh = (folder / "lion-head.off").string();
   const auto j = run_envcrust_json("reconstruct " + mesh + " -o " + path("lion.ply") + " --reference " + mesh + " --json");
   EXPECT_EQ(j["input_genus"], 0);
-  EXPECT_FALSE(j.contains("adaptive_retry"));
+  bool rounded = false;
+  for (const auto& n : j["notes"])
+    rounded = rounded || n.get<std::string>().find("creases, which fitted normal lines round off") != std::string::npos;
+  EXPECT_TRUE(rounded) << j["notes"].dump();
+  ASSERT_TRUE(j.contains("adaptive_retry"));
+  EXPECT_EQ(j["adaptive_retry"]["kept"], "adaptive");
+  EXPECT_EQ(j["adaptive_retry"]["adaptive"]["defects"], 0);
   EXPECT_GT(j["sheet"]["self_intersections_found"].get<long>(), 1000);
-  EXPECT_GT(j["sheet"]["self_intersections_smoothed"].get<long>(), j["sheet"]["self_intersections_cut"].get<long>());
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 1, 1);
-  EXPECT_LT(a["self_intersections"]["face_pairs"].get<long>(), j["sheet"]["self_intersections_found"].get<long>() / 40);
-  EXPECT_GE(j["sheet"]["self_intersection_cut_rounds"].get<int>(), 2);
+  EXPECT_LT(a["self_intersections"]["face_pairs"].get<long>(), j["sheet"]["self_intersections_found"].get<long>() / 3);
   // The sheet's own count, from its checks of what each step moved or made, is the analyzer's.
   EXPECT_EQ(j["sheet"]["self_intersections_left"], a["self_intersections"]["face_pairs"]);
-  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.06);
-  EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.07);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.045);
+  EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.06);
 }
 
 // The lion head as a point file (8,356 points whose spacing varies 20x): the detector
