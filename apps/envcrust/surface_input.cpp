@@ -34,6 +34,7 @@ constexpr double kTearingBendDeg = 80.0;
 // right; the lion head 70%, an open box 462%).
 constexpr double kCreaseMinLengthRelDiag = 0.1;
 
+// Sharp edges long enough in all to tear the sheet (a crease, not a few bad triangles).
 bool is_long_crease(const mesh::SharpEdges& sharp, const std::vector<Point3>& points) {
   return sharp.count > 0 && sharp.total_length > kCreaseMinLengthRelDiag * mesh::bbox_diagonal(points);
 }
@@ -97,8 +98,7 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, bool join_cre
     out.samples.points.push_back(mesh.vertices[v]);
     out.samples.normals.push_back(vertex_normals[v]);
   }
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
+  for (const auto& t : mesh.triangles) {
     const Point3& a = mesh.vertices[t[0]];
     const Point3& b = mesh.vertices[t[1]];
     const Point3& c = mesh.vertices[t[2]];
@@ -242,7 +242,6 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
   // 1.94% / 2.40% with fitted normals only near the creases (the seam between them reads as
   // curvature: rho 0.021 instead of 0.027); 40,000 points 0.83% / 1.17% in 75 s instead of
   // 1.62% / 2.06% in 162 s and 0.89% / 1.17% in 228 s.
-  std::optional<std::string> rounded_note;
   if (points.has_normals()) {
     progress.report("input: creases", 0.2);
     normals::PointCreaseOptions o;

@@ -81,11 +81,12 @@ struct PointCreaseOptions {
 /// Sharp creases of a sampled surface, from samples with normal lines that jump across them
 /// (normals given with a scan of a CAD part, or exact ones): every pair of near neighbours
 /// whose tangent planes meet in a line between them, bent by more than `min_bend_deg`, gives
-/// a segment of that line as long as the pair is apart, with the wedge bisector (from the
-/// line into the wedge between the two half-planes). `total_length` is the length of the
-/// creases found (a minimum spanning forest of the segments' midpoints, links up to 3 times
-/// the pairs' median length), `max_bend_deg` the largest bend among them. Estimated normals (PCA) turn smoothly
-/// across a crease and seldom jump enough to be read here.
+/// a segment of that line twice as long as the pair is apart (so that the segments of
+/// neighbouring pairs overlap), with the wedge bisector (from the line into the wedge between
+/// the two half-planes). `total_length` is the length of the creases found (a minimum
+/// spanning forest of the segments' midpoints, links up to 3 times the pairs' median length),
+/// `max_bend_deg` the largest bend among them. Estimated normals (PCA) turn smoothly across a
+/// crease and seldom jump enough to be read here.
 /// @pre normal_lines.size() == points.size(), unit vectors (sign meaningless).
 /// @throws InvalidOptions naming the field and value.
 mesh::SharpEdges point_creases(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
