@@ -9,6 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
 
 using envcrust::testing::CliTest;
 using envcrust::testing::run_envcrust;
@@ -133,29 +136,21 @@ TEST_F(CliTest, render_an_empty_panel_is_refused_naming_the_input) {
 }
 
 TEST_F(CliTest, render_bad_size_and_view_are_usage_errors) {
-  const auto size = run_envcrust("render builtin:sphere --size 80 -o " + path("x.png"));
-  EXPECT_EQ(size.exit_code, 2);
-  EXPECT_EQ(size.err, "envcrust: usage error: --size: expected WIDTHxHEIGHT in pixels, e.g. 800x600, got '80'\n");
-  const auto view = run_envcrust("render builtin:sphere --view side -o " + path("x.png"));
-  EXPECT_EQ(view.exit_code, 2);
-  EXPECT_EQ(view.err,
-            "envcrust: usage error: --view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got 'side'\n");
-  const auto tiny = run_envcrust("render builtin:sphere --size 8x8 -o " + path("x.png"));
-  EXPECT_EQ(tiny.exit_code, 2);
-  EXPECT_EQ(tiny.err, "envcrust: usage error: --size: width and height must be in [16, 8192] pixels, got '8x8'\n");
-  const auto steep = run_envcrust("render builtin:sphere --view 30,200 -o " + path("x.png"));
-  EXPECT_EQ(steep.exit_code, 2);
-  EXPECT_EQ(steep.err, "envcrust: usage error: --view: the elevation must be in [-90, 90] degrees, got '30,200'\n");
-  const auto grid = run_envcrust("render builtin:sphere builtin:torus builtin:square --grid 1 2 -o " + path("x.png"));
-  EXPECT_EQ(grid.exit_code, 2);
-  EXPECT_EQ(grid.err, "envcrust: usage error: --grid 1 2: room for 2 panels, not the 3 inputs\n");
-  // A grid far larger than the inputs would be a canvas of empty panels (300,000 columns).
-  const auto wide = run_envcrust("render builtin:sphere builtin:torus --grid 1 300000 -o " + path("x.png"));
-  EXPECT_EQ(wide.exit_code, 2);
-  EXPECT_EQ(wide.err, "envcrust: usage error: --grid 1 300000: leaves a row or column empty for 2 inputs\n");
-  const auto tall = run_envcrust("render builtin:sphere builtin:torus builtin:square --grid 3 2 -o " + path("x.png"));
-  EXPECT_EQ(tall.exit_code, 2);
-  EXPECT_EQ(tall.err, "envcrust: usage error: --grid 3 2: leaves a row or column empty for 3 inputs\n");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"builtin:sphere --size 80", "--size: expected WIDTHxHEIGHT in pixels, e.g. 800x600, got '80'"},
+      {"builtin:sphere --view side", "--view: expected iso, front, top or AZIMUTH,ELEVATION in degrees, got 'side'"},
+      {"builtin:sphere --size 8x8", "--size: width and height must be in [16, 8192] pixels, got '8x8'"},
+      {"builtin:sphere --view 30,200", "--view: the elevation must be in [-90, 90] degrees, got '30,200'"},
+      {"builtin:sphere builtin:torus builtin:square --grid 1 2", "--grid 1 2: room for 2 panels, not the 3 inputs"},
+      // A grid far larger than the inputs would be a canvas of empty panels (300,000 columns).
+      {"builtin:sphere builtin:torus --grid 1 300000", "--grid 1 300000: leaves a row or column empty for 2 inputs"},
+      {"builtin:sphere builtin:torus builtin:square --grid 3 2", "--grid 3 2: leaves a row or column empty for 3 inputs"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto result = run_envcrust("render " + args + " -o " + path("x.png"));
+    EXPECT_EQ(result.exit_code, 2) << args;
+    EXPECT_EQ(result.err, "envcrust: usage error: " + message + "\n") << args;
+  }
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
