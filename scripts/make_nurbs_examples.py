@@ -10,6 +10,11 @@ moebius-band.json   a ruled band around the rational unit circle whose ruling tu
                     round: a Moebius strip
 sphere.igs          the unit sphere, a rational circle revolved by a rational half circle
 plate-with-hole.igs a curved bicubic plate trimmed by a round hole (IGES trimmed surface 144)
+open-box.igs        five bilinear squares, the unit cube without its top: a model of several
+                    patches meeting at right angles (a disc with one rim loop)
+cup.igs             a rational tube and the disc closing its bottom (a pole at its centre),
+                    meeting at a right angle: a disc
+tube-quarters.json  four rational quarter tubes joined smoothly: an open cylinder
 """
 import json
 import math
@@ -122,17 +127,69 @@ def plate_with_hole():
             (100, [0, 0.5, 0.5, 0.8, 0.5, 0.8, 0.5])]  # a full circle, centre (0.5, 0.5), radius 0.3
 
 
-def write_json(patch, path):
+def bilinear(a, b, c, d):
+    """The flat quadrilateral a b c d (counter-clockwise), degree 1 both ways."""
+    return Patch(1, 1, [0, 0, 1, 1], [0, 0, 1, 1], 2, 2, [a, b, d, c], [1.0] * 4)
+
+
+def open_box():
+    """The unit cube's bottom and four sides, each face wound outward."""
+    corners = [(x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+    c = lambda x, y, z: corners[x + 2 * y + 4 * z]
+    faces = [(c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(1, 0, 0)),   # bottom, facing -z
+             (c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1)),   # y = 0
+             (c(1, 0, 0), c(1, 1, 0), c(1, 1, 1), c(1, 0, 1)),   # x = 1
+             (c(1, 1, 0), c(0, 1, 0), c(0, 1, 1), c(1, 1, 1)),   # y = 1
+             (c(0, 1, 0), c(0, 0, 0), c(0, 0, 1), c(0, 1, 1))]   # x = 0
+    return [bilinear(*f) for f in faces]
+
+
+def revolved(profile, profile_weights, knots_v):
+    """The rational unit circle (u) swept along a profile of (radius, z) points (v)."""
+    points, weights = [], []
+    for (r, z), w in zip(profile, profile_weights):
+        for i, (x, y) in enumerate(CIRCLE):
+            points.append((x * r, y * r, z))
+            weights.append(CIRCLE_W[i] * w)
+    return Patch(2, len(knots_v) - len(profile) - 1, CIRCLE_KNOTS, knots_v, 9, len(profile), points, weights)
+
+
+def cup():
+    """A tube of radius 1 from z = 0 to 1, and the disc at z = 0 (its centre a pole)."""
+    tube = revolved([(1, 0), (1, 1)], [1, 1], [0, 0, 1, 1])
+    bottom = revolved([(0, 0), (1, 0)], [1, 1], [0, 0, 1, 1])
+    return [tube, bottom]
+
+
+def tube_quarters():
+    """The open cylinder of radius 1, z in [0, 1], as four rational quarter tubes."""
+    patches = []
+    for q in range(4):
+        points, weights = [], []
+        for z in (0, 1):
+            for i in range(3):
+                x, y = CIRCLE[2 * q + i]
+                points.append((x, y, z))
+                weights.append(CIRCLE_W[2 * q + i])
+        patches.append(Patch(2, 1, [0, 0, 0, 1, 1, 1], [0, 0, 1, 1], 3, 2, points, weights))
+    return patches
+
+
+def write_json(patches, path):
     # NURBS-Python lists the control points v fastest.
+    entries = [json_entry(p) for p in (patches if isinstance(patches, list) else [patches])]
+    with open(path, "w") as f:
+        json.dump({"shape": {"type": "surface", "count": len(entries), "data": entries}}, f, indent=1)
+        f.write("\n")
+
+
+def json_entry(patch):
     order = [i + patch.count_u * j for i in range(patch.count_u) for j in range(patch.count_v)]
-    data = {"type": "spline", "rational": True, "dimension": 3, "degree_u": patch.degree_u,
+    return {"type": "spline", "rational": True, "dimension": 3, "degree_u": patch.degree_u,
             "degree_v": patch.degree_v, "knotvector_u": patch.knots_u, "knotvector_v": patch.knots_v,
             "size_u": patch.count_u, "size_v": patch.count_v,
             "control_points": {"points": [list(patch.points[k]) for k in order],
                                "weights": [patch.weights[k] for k in order]}}
-    with open(path, "w") as f:
-        json.dump({"shape": {"type": "surface", "count": 1, "data": [data]}}, f, indent=1)
-        f.write("\n")
 
 
 def main():
@@ -143,7 +200,12 @@ def main():
     write_json(moebius_band(), os.path.join(out, "moebius-band.json"))
     write_iges([(128, surface_values(sphere()))], os.path.join(out, "sphere.igs"), "envcrust unit sphere")
     write_iges(plate_with_hole(), os.path.join(out, "plate-with-hole.igs"), "envcrust plate with a hole")
-    print("wrote trefoil-ribbon.igs, moebius-band.json, sphere.igs, plate-with-hole.igs to", os.path.normpath(out))
+    write_iges([(128, surface_values(p)) for p in open_box()], os.path.join(out, "open-box.igs"),
+               "envcrust open box")
+    write_iges([(128, surface_values(p)) for p in cup()], os.path.join(out, "cup.igs"), "envcrust cup")
+    write_json(tube_quarters(), os.path.join(out, "tube-quarters.json"))
+    print("wrote trefoil-ribbon.igs, moebius-band.json, sphere.igs, plate-with-hole.igs, open-box.igs, cup.igs,",
+          "tube-quarters.json to", os.path.normpath(out))
 
 
 if __name__ == "__main__":

@@ -86,9 +86,9 @@ void register_analyze(CLI::App& app) {
       "analyze",
       "Report a mesh's topology (manifoldness, Euler characteristic, orientability, genus,\n"
       "boundary loops with knot types, linking numbers) and, with --reference, its distances");
-  sub->add_option("mesh", cmd->mesh, "Mesh file (.ply/.off/.obj/.stl), builtin:NAME, or a NURBS patch (.igs/.iges/.json; its tessellation)");
+  sub->add_option("mesh", cmd->mesh, "Mesh file (.ply/.off/.obj/.stl), builtin:NAME, or a NURBS file (.igs/.iges/.json, one patch or several; its tessellation)");
   sub->add_option("-r,--reference", cmd->reference,
-                  "Reference: mesh file, point file, builtin:NAME or a NURBS patch (.igs/.iges/.json) (its fine tessellation, chord error below 1e-4 of the diagonal, and boundary curves)");
+                  "Reference: mesh file, point file, builtin:NAME or a NURBS file (.igs/.iges/.json, one patch or several) (its fine tessellation, chord error below 1e-4 of the diagonal, and boundary curves)");
   sub->add_option("--curve", cmd->curve,
                   "Analyze the knot type of one closed polyline (.polyline/.xyz) instead of a mesh");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");

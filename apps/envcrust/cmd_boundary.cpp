@@ -198,7 +198,7 @@ void register_boundary(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "boundary", "Find the boundary curves of a point cloud (as reconstruct does) and report them, alone");
   sub->add_option("input", cmd->input,
-                  "A point file (.xyz/.pts/.txt/.csv/.ply; normals optional), builtin:NAME or a NURBS patch (.igs/.iges/.json; sampled "
+                  "A point file (.xyz/.pts/.txt/.csv/.ply; normals optional), builtin:NAME or a NURBS file (.igs/.iges/.json, one patch or several; sampled "
                   "without its normals and boundary, which are then estimated), or a mesh (its border loops)")
       ->required();
   sub->add_option("-o,--output", cmd->output,
@@ -208,13 +208,13 @@ void register_boundary(CLI::App& app) {
   sub->add_option("--points-out", cmd->points_output,
                   "Write the samples the curves were fitted to (.xyz/.ply, normals = their outward conormals)");
   sub->add_option("-r,--reference", cmd->reference,
-                  "True boundary to compare with: builtin:NAME, a NURBS patch or a mesh (its border loops); "
+                  "True boundary to compare with: builtin:NAME, a NURBS file or a mesh (its border loops); "
                   "builtin and NURBS inputs default to their own surface");
   sub->add_flag("--no-knots", cmd->no_knots, "Skip the knot type of each curve (as analyze --no-knots)");
-  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
+  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
-  sub->add_option("--noise", cmd->sampling.noise_rel_diag, "Gaussian noise on builtin:NAME and NURBS patch samples, fraction of the diagonal")
+  sub->add_option("--noise", cmd->sampling.noise_rel_diag, "Gaussian noise on builtin:NAME and NURBS samples, fraction of the diagonal")
       ->capture_default_str()
       ->check(number_above(0, true));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->check(seed_number())->capture_default_str();

@@ -116,13 +116,13 @@ void run_powercrust(PowerCrustCommand& cmd) {
 void register_powercrust(CLI::App& app) {
   auto cmd = std::make_shared<PowerCrustCommand>();
   CLI::App* sub = app.add_subcommand("powercrust", "Run the Power Crust on a point set (closed surfaces)");
-  sub->add_option("input", cmd->input, "Point file (.xyz/.pts/.txt/.csv/.ply, or a mesh's vertices), or builtin:NAME or a NURBS patch (.igs/.iges/.json), sampled")
+  sub->add_option("input", cmd->input, "Point file (.xyz/.pts/.txt/.csv/.ply, or a mesh's vertices), or builtin:NAME or a NURBS file (.igs/.iges/.json, one patch or several), sampled")
       ->required();
   sub->add_option("-o,--output", cmd->output, "Crust mesh (.ply/.off/.obj)")->required();
   sub->add_option("--medial-axis", cmd->medial_axis_output, "Write the inner power shape's triangles as a mesh");
   sub->add_option("--poles", cmd->poles_output, "Write the poles (polar balls): .ply with x y z radius and a label code (0 unknown, 1 in, 2 out), any "
                   "other name as text lines 'x y z radius in|out|unknown' (both read by render --balls)");
-  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
+  sub->add_option("-n,--count", cmd->sampling.count, "Points drawn from builtin:NAME and NURBS inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->check(seed_number())->capture_default_str();

@@ -61,7 +61,7 @@ std::optional<double> parse_rho(const std::string& text) {
 }
 
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
-  sub.add_option("input", cmd.input, "builtin:NAME, a NURBS patch (.igs/.iges IGES entity 128, .json NURBS-Python), a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
+  sub.add_option("input", cmd.input, "builtin:NAME, a NURBS file (.igs/.iges IGES entities 128/144, .json NURBS-Python; several patches are joined into one model), a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
   sub.add_option("--rho", cmd.rho,
                  "Envelope radius: 'auto' (half the estimated reach, raised to bridge the gaps of "
@@ -76,11 +76,11 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "Envelope sample spacing as a fraction of rho")
       ->capture_default_str()
       ->check(number_in(0, 4, false, true));
-  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME and NURBS patch inputs")
+  sub.add_option("-n,--count", cmd.sampling.count, "Points drawn from builtin:NAME and NURBS inputs")
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
   sub.add_option("--noise", cmd.sampling.noise_rel_diag,
-                 "Gaussian noise on builtin:NAME and NURBS patch samples, fraction of the diagonal")
+                 "Gaussian noise on builtin:NAME and NURBS samples, fraction of the diagonal")
       ->capture_default_str()
       ->check(number_above(0, true));
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->check(seed_number())->capture_default_str();

@@ -69,16 +69,16 @@ void run_sample(const SampleCommand& cmd) {
   if (!cmd.output.empty()) io::check_output_path(cmd.output, cmd.mesh ? io::OutputKind::Mesh : io::OutputKind::Points);
   if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Polyline);
   check_distinct_outputs({{"-o", cmd.output}, {"--boundary-out", cmd.boundary_output}});
-  const auto surface = is_parametric_spec(cmd.surface) ? parametric_surface(cmd.surface) : surfaces::make_builtin(cmd.surface);
+  const auto model = parametric_model(is_parametric_spec(cmd.surface) ? cmd.surface : "builtin:" + cmd.surface);
   nlohmann::json report = {{"surface", cmd.surface}};
   if (!cmd.output.empty()) {
     if (cmd.mesh) {
-      const TriangleMesh mesh = surfaces::tessellate(*surface);
+      const TriangleMesh& mesh = model->truth();
       io::write_mesh(cmd.output, mesh);
       report["mesh"] = {{"file", cmd.output}, {"vertices", mesh.vertices.size()},
                         {"triangles", mesh.triangles.size()}};
     } else {
-      const PointSet points = surfaces::sample_surface(*surface, cmd.sampling);
+      const PointSet points = model->sample(cmd.sampling);
       io::write_points(cmd.output, points);
       report["points"] = {{"file", cmd.output}, {"count", points.size()},
                           {"normals", points.has_normals()}, {"seed", cmd.sampling.seed},
@@ -88,7 +88,7 @@ void run_sample(const SampleCommand& cmd) {
   if (!cmd.boundary_output.empty()) {
     // All loops in one file, one point per line, loops separated by blank lines is not a
     // format our readers take back: write one file per loop instead (NAME.0.polyline, ...).
-    const auto curves = surfaces::boundary_curves(*surface, 2e-3 * surfaces::bbox_diagonal(*surface));
+    const auto curves = model->boundary_curves(2e-3 * model->diagonal());
     const auto paths = numbered_paths(cmd.boundary_output, curves.size());
     nlohmann::json files = nlohmann::json::array();
     for (std::size_t i = 0; i < curves.size(); ++i) {
@@ -97,7 +97,8 @@ void run_sample(const SampleCommand& cmd) {
     }
     report["boundary_files"] = files;
   }
-  report["expected"] = expected_json(surface->expected_topology());
+  report["expected"] = expected_json(model->expected_topology());
+  if (model->patch_count() > 1) report["patches"] = model->patch_count();
   if (cmd.common.json) {
     print_json(report);
   } else if (!cmd.common.quiet) {
@@ -117,8 +118,8 @@ void run_sample(const SampleCommand& cmd) {
 void register_sample(CLI::App& app) {
   auto cmd = std::make_shared<SampleCommand>();
   CLI::App* sub = app.add_subcommand(
-      "sample", "Sample a built-in surface or a NURBS patch uniformly by area, or write its exact tessellation");
-  sub->add_option("surface", cmd->surface, "Built-in surface name (see --list), or a NURBS patch file (.igs/.iges IGES entity 128, .json NURBS-Python)");
+      "sample", "Sample a built-in surface or a NURBS file uniformly by area, or write its exact tessellation");
+  sub->add_option("surface", cmd->surface, "Built-in surface name (see --list), or a NURBS file (.igs/.iges IGES entities 128/144, .json NURBS-Python; several patches are joined into one model)");
   sub->add_option("-o,--output", cmd->output, "Output file (.xyz/.ply points; .ply/.off/.obj with --mesh)");
   auto* count = sub->add_option("-n,--count", cmd->sampling.count, "Number of points")
                     ->capture_default_str()

@@ -21,29 +21,43 @@ bool is_builtin_spec(const std::string& spec) { return spec.rfind(kBuiltinPrefix
 
 bool is_parametric_spec(const std::string& spec) { return is_builtin_spec(spec) || io::is_nurbs_file(spec); }
 
-std::unique_ptr<surfaces::Surface> parametric_surface(const std::string& spec) {
-  if (is_builtin_spec(spec)) return surfaces::make_builtin(spec.substr(kBuiltinPrefix.size()));
-  if (!io::is_nurbs_file(spec)) return nullptr;
-  auto patch = io::read_nurbs_patch(spec);
+std::optional<models::PatchModel> parametric_model(const std::string& spec) {
+  if (is_builtin_spec(spec)) {
+    std::vector<std::unique_ptr<surfaces::Surface>> one;
+    one.push_back(surfaces::make_builtin(spec.substr(kBuiltinPrefix.size())));
+    std::string name = one.front()->name();
+    return models::PatchModel(std::move(one), std::move(name));
+  }
+  if (!io::is_nurbs_file(spec)) return std::nullopt;
+  auto read = io::read_nurbs_patches(spec);
+  const std::string stem = std::filesystem::path(spec).stem().string();
+  std::vector<std::unique_ptr<surfaces::Surface>> patches;
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    const std::string which = read.size() > 1 ? "patch " + std::to_string(i + 1) + " of " + std::to_string(read.size()) + ": " : "";
+    try {
+      patches.push_back(surfaces::make_nurbs_surface(std::move(read[i]), read.size() > 1 ? stem + "." + std::to_string(i + 1) : stem));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(spec + ": " + which + e.what());
+    }
+  }
   try {
-    return surfaces::make_nurbs_surface(std::move(patch), std::filesystem::path(spec).stem().string());
+    return models::PatchModel(std::move(patches), stem);
   } catch (const InvalidInput& e) {
     throw InvalidInput(spec + ": " + e.what());
   }
 }
 
 TriangleMesh load_mesh(const std::string& spec) {
-  if (is_parametric_spec(spec)) return surfaces::tessellate(*parametric_surface(spec));
+  if (is_parametric_spec(spec)) return parametric_model(spec)->truth();
   return io::read_triangle_mesh(spec);
 }
 
 analysis::Reference load_reference(const std::string& spec) {
   analysis::Reference reference;
   if (is_parametric_spec(spec)) {
-    const auto surface = parametric_surface(spec);
-    reference.mesh = surfaces::tessellate(*surface);
-    const double spacing = 2e-3 * surfaces::bbox_diagonal(*surface);
-    for (const auto& curve : surfaces::boundary_curves(*surface, spacing))
+    const auto model = parametric_model(spec);
+    reference.mesh = model->truth();
+    for (const auto& curve : model->boundary_curves(2e-3 * model->diagonal()))
       reference.boundary.push_back(curve.polyline());
     return reference;
   }

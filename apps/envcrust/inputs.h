@@ -2,11 +2,11 @@
 #pragma once
 
 #include "envcrust/analysis.h"
+#include "envcrust/models.h"
 #include "envcrust/surfaces.h"
 #include "envcrust/types.h"
 
-#include <memory>
-
+#include <optional>
 #include <string>
 
 namespace envcrust::cli {
@@ -18,9 +18,11 @@ bool is_builtin_spec(const std::string& spec);
 /// geometry (normals, boundary curves) is known.
 bool is_parametric_spec(const std::string& spec);
 
-/// The exact surface of "builtin:NAME" or of a NURBS patch file; nullptr for other specs.
-/// @throws IoError or InvalidInput naming the file (a patch make_nurbs_surface refuses).
-std::unique_ptr<surfaces::Surface> parametric_surface(const std::string& spec);
+/// The exact surface of "builtin:NAME", or the patches of a NURBS file joined into one model
+/// (models::PatchModel); nullopt for other specs.
+/// @throws IoError or InvalidInput naming the file (a patch make_nurbs_surface refuses: "part.igs:
+///   patch 3 of 5: ...", patches that form no surface).
+std::optional<models::PatchModel> parametric_model(const std::string& spec);
 
 /// A triangle mesh from a mesh file, or the exact tessellation of a parametric spec.
 TriangleMesh load_mesh(const std::string& spec);

@@ -126,6 +126,23 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, bool join_cre
   }
 }
 
+// Several patches joined: a known genus (the adaptive retry's bound), and creases where the
+// patches meet at an angle (a box of flat faces), handled as a point file's jumping normals are.
+void load_model_creases(const models::PatchModel& model, bool join_creases, LoadedSurface& out) {
+  out.notes.push_back(model.description());
+  out.kind.genus = topology::total_genus(topology::analyze_topology(model.truth()));
+  auto sharp = mesh::sharp_edges(model.truth(), kTearingBendDeg);
+  if (!is_long_crease(sharp, model.truth().vertices)) return;
+  out.notes.push_back(crease_note("the patches meet", sharp, "edges", join_creases ? kJoined : kRoundedOff));
+  if (join_creases) {
+    out.samples.creases = std::move(sharp.segments);
+  } else {
+    out.samples.normals = fitted_like(out.samples.points, out.samples.normals);
+    out.kind.are_normals_estimated = true;
+    out.kind.are_signs_given = true;  // the fitted lines face like the patches' normals
+  }
+}
+
 // The points of every --boundary file: a point file, or a closed curve (.polyline). Their
 // normals (outward conormals) are kept only if every file has them.
 PointSet read_boundary_points(const std::vector<std::string>& files) {
@@ -358,24 +375,25 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
   if (sampling.mesh_as_points && is_parametric_spec(spec))
     throw UsageError("--as-points applies to mesh files: " + spec + " is sampled with its exact normals");
   if (is_parametric_spec(spec)) {
-    // A NURBS patch is read as a built-in surface is (out.kind keeps is_builtin: no scan cuts).
-    const auto surface = parametric_surface(spec);
+    // A NURBS file is read as a built-in surface is (out.kind keeps is_builtin: no scan cuts).
+    const auto model = parametric_model(spec);
     surfaces::SampleOptions o;
     o.count = sampling.count;
     o.noise_rel_diag = sampling.noise_rel_diag;
     o.seed = sampling.seed;
     o.with_normals = !sampling.builtin_as_points;
-    PointSet points = surfaces::sample_surface(*surface, o);
+    PointSet points = model->sample(o);
     if (sampling.builtin_as_points) {
       load_point_samples(std::move(points), spec, sampling, progress, out);
-      out.notes.push_back("sampled from " + surface->name() + " without its normals and boundary");
+      out.notes.push_back("sampled from " + model->name() + " without its normals and boundary");
       return out;
     }
     out.samples.points = std::move(points.points);
     out.samples.normals = std::move(points.normals);
-    out.samples.boundary = surfaces::boundary_curves(*surface, 0.005 * surfaces::bbox_diagonal(*surface));
+    out.samples.boundary = model->boundary_curves(0.005 * model->diagonal());
     out.source = is_builtin_spec(spec) ? "builtin" : "nurbs";
-    out.notes.push_back("exact normals and boundary curves of " + surface->name());
+    out.notes.push_back("exact normals and boundary curves of " + model->name());
+    if (model->patch_count() > 1) load_model_creases(*model, sampling.join_creases, out);
     return out;
   }
   const std::string ext = io::extension_of(spec);

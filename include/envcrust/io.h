@@ -27,16 +27,18 @@ namespace envcrust::io {
 ///   (vertex 17 of 100)", "a.xyz:3: non-finite coordinate", "a.xyz: no points".
 PointSet read_points(const std::filesystem::path& path);
 
-/// Read one NURBS patch, format chosen by extension: `.igs/.iges` (IGES: the file's one
-/// rational B-spline surface, entity 128, placed by its transformation matrix if any; trimmed
-/// surfaces, entities 143/144, are refused) or `.json` (NURBS-Python's exchange format: a
-/// "shape" of type "surface" with one entry, control points listed v fastest, weights optional).
-/// The patch is checked by surfaces::make_nurbs_surface, not here.
-/// @throws IoError one line naming the file and the problem, e.g. "a.igs: 2 rational B-spline
-///   surfaces (IGES entity 128): envcrust reads one patch per file (...)".
-surfaces::NurbsPatch read_nurbs_patch(const std::filesystem::path& path);
+/// Read the NURBS patches of a file, format chosen by extension: `.igs/.iges` (IGES: every
+/// rational B-spline surface, entity 128, placed by its transformation matrix if any, and
+/// every trimmed surface over one, entity 144, in the order of the directory; bounded
+/// surfaces, 143, are refused) or `.json` (NURBS-Python's exchange format: a "shape" of type
+/// "surface" with one or more entries, control points listed v fastest, weights optional).
+/// The patches are checked by surfaces::make_nurbs_surface and joined by models::PatchModel,
+/// not here.
+/// @throws IoError one line naming the file and the problem, e.g. "a.igs: a bounded surface
+///   (IGES entity 143): not supported; ...", "a.json: surface 2: size_u is 0, not a count of 1 to 1000000".
+std::vector<surfaces::NurbsPatch> read_nurbs_patches(const std::filesystem::path& path);
 
-/// True for the extensions read_nurbs_patch reads (.igs, .iges, .json).
+/// True for the extensions read_nurbs_patches reads (.igs, .iges, .json).
 bool is_nurbs_file(const std::filesystem::path& path);
 
 /// Read a polygon mesh from `.off/.obj/.ply/.stl` (STL ascii or binary; its duplicated

@@ -102,6 +102,10 @@ struct SampleOptions {
 /// @throws InvalidOptions on count 0 or negative noise.
 PointSet sample_surface(const Surface& surface, const SampleOptions& options = {});
 
+/// Move each point by Gaussian noise of standard deviation `sigma` along each axis, from a
+/// stream of its own for `seed` (sample_surface's noise).
+void add_noise(std::vector<Point3>& points, double sigma, std::uint64_t seed);
+
 /// Options of tessellate.
 struct TessellationOptions {
   double max_error_rel_diag = 1e-4;  ///< bound on the chord error, fraction of the bbox diagonal
@@ -118,6 +122,11 @@ TriangleMesh tessellate(const Surface& surface, const TessellationOptions& optio
 /// `max_spacing` apart (arc length). Glued edges are joined (the Moebius strip has one loop);
 /// a trimmed surface's loops are its trim loops.
 std::vector<BoundaryCurve> boundary_curves(const Surface& surface, double max_spacing);
+
+/// Set `expected`'s boundary_loops, boundary_knots (the knot type of each loop's polyline;
+/// "untyped" for a loop that touches itself or another: no generic projection) and
+/// abs_linking_number (of loops 0 and 1) from the loops.
+void set_boundary_loops(const std::vector<Polyline>& loops, ExpectedTopology& expected);
 
 /// Bounding-box diagonal of the surface (from a fine parameter grid).
 double bbox_diagonal(const Surface& surface);

@@ -364,34 +364,33 @@ surfaces::NurbsPatch trimmed_patch(const IgesFile& file, const DirectoryEntry& t
 
 }  // namespace
 
-surfaces::NurbsPatch read_iges_patch(const std::filesystem::path& path) {
+std::vector<surfaces::NurbsPatch> read_iges_patches(const std::filesystem::path& path) {
   const IgesFile file(path);
-  std::vector<surfaces::NurbsPatch> found;  // entities 144 (their base, trimmed), and 128 no 144 uses
+  // Entities 144 (their base, trimmed), and 128 no 144 uses, in the order of the directory.
+  std::map<std::size_t, surfaces::NurbsPatch> found;
   std::set<std::size_t> bases;
   std::map<int, std::size_t> types;
   for (const auto& e : file.entries()) {
     ++types[e.type];
     if (e.type == kBounded)
-      file.fail("a bounded surface (IGES entity 143): not supported; envcrust reads one rational B-spline surface "
+      file.fail("a bounded surface (IGES entity 143): not supported; envcrust reads rational B-spline surfaces "
                 "(entity 128), trimmed or not (144)");
     if (e.type == kTrimmed) {
       std::size_t base_line = 0;
-      found.push_back(trimmed_patch(file, e, base_line));
+      found.emplace(e.line, trimmed_patch(file, e, base_line));
       bases.insert(base_line);
     }
   }
   for (const auto& e : file.entries())
-    if (e.type == kSurface && !bases.contains(e.line)) found.push_back(read_surface(file, e));
+    if (e.type == kSurface && !bases.contains(e.line)) found.emplace(e.line, read_surface(file, e));
   if (found.empty()) {
     std::string list;
     for (const auto& [type, count] : types) list += (list.empty() ? "" : ", ") + std::to_string(type);
     file.fail("no rational B-spline surface (IGES entity 128) in the file (its entities: " + list + ")");
   }
-  if (found.size() > 1)
-    file.fail(std::to_string(found.size()) +
-              " rational B-spline surfaces (IGES entity 128): envcrust reads one patch per file (sample them into a "
-              "point file or mesh them to reconstruct the whole)");
-  return std::move(found.front());
+  std::vector<surfaces::NurbsPatch> patches;
+  for (auto& [line, patch] : found) patches.push_back(std::move(patch));
+  return patches;
 }
 
 }  // namespace envcrust::io::detail

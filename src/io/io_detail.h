@@ -121,8 +121,8 @@ RawMesh read_off(const std::filesystem::path& path);
 RawMesh read_obj(const std::filesystem::path& path);
 RawMesh read_stl(const std::filesystem::path& path);
 PointSet read_xyz(const std::filesystem::path& path);
-/// The one (untrimmed) rational B-spline surface of an IGES file (read_nurbs_patch).
-surfaces::NurbsPatch read_iges_patch(const std::filesystem::path& path);
+/// The rational B-spline surfaces of an IGES file, trimmed or not (read_nurbs_patches).
+std::vector<surfaces::NurbsPatch> read_iges_patches(const std::filesystem::path& path);
 
 /// Text for quoting a token in a message, shortened when it is long.
 std::string quote(std::string_view token);

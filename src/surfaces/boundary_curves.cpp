@@ -4,6 +4,7 @@
 #include "vector_ops.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/knots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,6 +166,23 @@ std::vector<BoundaryCurve> boundary_curves(const Surface& surface, double max_sp
     curves.push_back(std::move(curve));
   }
   return curves;
+}
+
+void set_boundary_loops(const std::vector<Polyline>& loops, ExpectedTopology& expected) {
+  expected.boundary_loops = static_cast<int>(loops.size());
+  expected.boundary_knots.clear();
+  expected.abs_linking_number = 0;
+  for (const auto& loop : loops) {
+    try {
+      expected.boundary_knots.push_back(knots::to_string(knots::identify_knot(loop).type));
+    } catch (const NumericalFailure&) {
+      expected.boundary_knots.push_back("untyped");
+    }
+  }
+  try {
+    if (loops.size() >= 2) expected.abs_linking_number = std::abs(knots::linking_number(loops[0], loops[1]));
+  } catch (const NumericalFailure&) {
+  }
 }
 
 }  // namespace envcrust::surfaces

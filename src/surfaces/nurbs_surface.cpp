@@ -9,7 +9,6 @@
 #include "vector_ops.h"
 
 #include "envcrust/errors.h"
-#include "envcrust/knots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -366,21 +365,9 @@ class NurbsSurface final : public Surface {
       t.euler_characteristic = poles;  // a tube, each collapsed end closing it: disc, sphere
     }
     const auto curves = boundary_curves(*this, 2e-3 * bbox_diagonal(*this));
-    t.boundary_loops = static_cast<int>(curves.size());
     std::vector<Polyline> loops;
     for (const auto& c : curves) loops.push_back(c.polyline());
-    // A loop that touches itself (or another) has no generic projection: "untyped", |lk| 0.
-    for (const auto& loop : loops) {
-      try {
-        t.boundary_knots.push_back(knots::to_string(knots::identify_knot(loop).type));
-      } catch (const NumericalFailure&) {
-        t.boundary_knots.push_back("untyped");
-      }
-    }
-    try {
-      if (loops.size() >= 2) t.abs_linking_number = std::abs(knots::linking_number(loops[0], loops[1]));
-    } catch (const NumericalFailure&) {
-    }
+    set_boundary_loops(loops, t);
     return t;
   }
 

@@ -126,16 +126,17 @@ PointSet sample_surface(const Surface& surface, const SampleOptions& options) {
     }
   }
 
-  if (options.noise_rel_diag > 0) {
-    const double sigma = options.noise_rel_diag * bbox_diagonal(surface);
-    // A separate stream so that noisy and clean samples share their underlying points.
-    Random noise(options.seed ^ 0x9E3779B97F4A7C15ULL);
-    for (Point3& p : result.points) {
-      const double dx = noise.normal(), dy = noise.normal(), dz = noise.normal();
-      p = p + sigma * Vector3(dx, dy, dz);
-    }
-  }
+  if (options.noise_rel_diag > 0) add_noise(result.points, options.noise_rel_diag * bbox_diagonal(surface), options.seed);
   return result;
+}
+
+void add_noise(std::vector<Point3>& points, double sigma, std::uint64_t seed) {
+  // A stream of its own, so that noisy and clean samples share their underlying points.
+  Random noise(seed ^ 0x9E3779B97F4A7C15ULL);
+  for (Point3& p : points) {
+    const double dx = noise.normal(), dy = noise.normal(), dz = noise.normal();
+    p = p + sigma * Vector3(dx, dy, dz);
+  }
 }
 
 }  // namespace envcrust::surfaces

@@ -73,6 +73,13 @@ double chord_error(const Surface& surface, const Point3& p, const Point3& q, dou
   return std::abs(dot(mid - jet.position, n));
 }
 
+/// Distance between the chord midpoint of p, q and the surface point at the parameter
+/// midpoint: for edges along the boundary, where a curve that bends within the tangent plane
+/// (a flat disc's rim) has no normal error but is cut short all the same.
+double chord_gap(const Surface& surface, const Point3& p, const Point3& q, double u, double v) {
+  return std::sqrt(CGAL::squared_distance(CGAL::midpoint(p, q), surface.evaluate(u, v).position));
+}
+
 struct GridErrors {
   double along_u = 0, along_v = 0, diagonal = 0;
 };
@@ -83,21 +90,31 @@ GridErrors measure_errors(const Surface& surface, const ParameterDomain& d, Reso
     return grid[static_cast<std::size_t>(i) * static_cast<std::size_t>(r.nv + 1) +
                 static_cast<std::size_t>(j)];
   };
+  // Rows and columns on an unglued edge of the domain are boundary curves.
+  const bool v_border = d.v_gluing == Gluing::None, u_border = d.u_gluing == Gluing::None;
   GridErrors e;
-  for (int i = 0; i < r.nu; ++i) {
+  for (int i = 0; i <= r.nu; ++i) {
     const double u = parameter(d.u0, d.u1, i, r.nu);
     const double u_mid = parameter(d.u0, d.u1, 2 * i + 1, 2 * r.nu);
+    const bool border_column = u_border && (i == 0 || i == r.nu);
     for (int j = 0; j <= r.nv; ++j) {
       const double v = parameter(d.v0, d.v1, j, r.nv);
       const bool pole_row = (j == 0 && d.v0_is_pole) || (j == r.nv && d.v1_is_pole);
-      if (!pole_row) {
-        e.along_u = std::max(e.along_u, chord_error(surface, at(i, j), at(i + 1, j), u_mid, v));
+      const bool border_row = v_border && (j == 0 || j == r.nv);
+      if (!pole_row && i < r.nu) {
+        const double along = border_row ? chord_gap(surface, at(i, j), at(i + 1, j), u_mid, v)
+                                        : chord_error(surface, at(i, j), at(i + 1, j), u_mid, v);
+        e.along_u = std::max(e.along_u, along);
       }
       if (j == r.nv) continue;
       const double v_mid = parameter(d.v0, d.v1, 2 * j + 1, 2 * r.nv);
-      e.along_v = std::max(e.along_v, chord_error(surface, at(i, j), at(i, j + 1), u, v_mid));
-      e.diagonal =
-          std::max(e.diagonal, chord_error(surface, at(i, j), at(i + 1, j + 1), u_mid, v_mid));
+      if (i < r.nu || border_column) {
+        const double along = border_column ? chord_gap(surface, at(i, j), at(i, j + 1), u, v_mid)
+                                           : chord_error(surface, at(i, j), at(i, j + 1), u, v_mid);
+        e.along_v = std::max(e.along_v, along);
+      }
+      if (i < r.nu)
+        e.diagonal = std::max(e.diagonal, chord_error(surface, at(i, j), at(i + 1, j + 1), u_mid, v_mid));
     }
   }
   return e;

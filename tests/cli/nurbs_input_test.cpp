@@ -92,6 +92,47 @@ TEST_F(NurbsInput, a_trimmed_iges_square_with_a_round_hole_comes_out_with_two_lo
   for (const auto& b : j["analysis"]["boundary_matches"]) EXPECT_LT(b["hausdorff_rel_diag"].get<double>(), 0.01) << b;
 }
 
+TEST_F(NurbsInput, the_shipped_models_of_several_patches_come_out_whole) {
+  // examples/nurbs/tube-quarters.json: four quarter tubes joined smoothly, an open cylinder.
+  const std::string examples = std::string(ENVCRUST_SOURCE_DIR) + "/examples/nurbs/";
+  const auto t = run_envcrust_json("reconstruct " + examples + "tube-quarters.json -n 5000 -o " + path("t.ply") + " --json");
+  EXPECT_EQ(t["source"], "nurbs");
+  expect_result(t["analysis"], 0, 2, true);
+  ASSERT_EQ(t["analysis"]["boundary_matches"].size(), 2u);
+  for (const auto& b : t["analysis"]["boundary_matches"]) EXPECT_LT(b["hausdorff_rel_diag"].get<double>(), 0.01) << b;
+  // examples/nurbs/cup.igs: a tube and the disc closing its bottom at a right angle, a disc
+  // whose crease is rounded off (as sharp creases are: within 1% of the diagonal).
+  const auto s = run_envcrust_json("sample " + examples + "cup.igs --mesh -o " + path("cup.ply") + " --json");
+  EXPECT_EQ(s["patches"], 2);
+  EXPECT_EQ(s["expected"]["euler_characteristic"], 1);
+  EXPECT_EQ(s["expected"]["boundary_loops"], 1);
+  const auto c = run_envcrust_json("reconstruct " + examples + "cup.igs -o " + path("c.ply") + " --json");
+  const auto& a = c["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 1);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.01);
+  ASSERT_EQ(a["boundary_matches"].size(), 1u);
+  EXPECT_LT(a["boundary_matches"][0]["hausdorff_rel_diag"].get<double>(), 0.005);
+  bool creases_named = false;
+  for (const auto& note : c["notes"])
+    creases_named = creases_named || note.get<std::string>().starts_with("the patches meet by more than 80 degrees");
+  EXPECT_TRUE(creases_named) << c["notes"];
+}
+
+TEST_F(NurbsInput, patches_that_form_no_surface_are_refused_by_name) {
+  const auto c = [](double x, double y, double z) { return Point3(x, y, z); };
+  write("book.igs", iges_text(std::vector{bilinear_patch(c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1)),
+                                          bilinear_patch(c(0, 0, 0), c(0, 1, 0), c(0, 1, 1), c(0, 0, 1)),
+                                          bilinear_patch(c(0, 0, 0), c(-1, -1, 0), c(-1, -1, 1), c(0, 0, 1))}));
+  expect_reconstruct_refuses("book.igs",
+                             "3 patches meet along an edge near (0, 0, 0.5) (1 such edges): the patches form no surface");
+  auto bad = cylinder_patch();
+  bad.knots_u[4] = 0.1;
+  write("second-bad.json", geomdl_json({square_patch(), bad}));
+  expect_reconstruct_refuses("second-bad.json", "patch 2 of 2: NURBS surface: knots in u decrease at index 4 (0.25 then 0.1)");
+}
+
 TEST_F(NurbsInput, unreadable_and_degenerate_patches_are_refused_by_name) {
   write("trim.igs", iges_trimmed_text(cylinder_patch(), {iges_line(0, -1, 0.5, -1), iges_line(0.5, -1, 0.5, 1),
                                                           iges_line(0.5, 1, 0, 1), iges_line(0, 1, 0, -1)}));

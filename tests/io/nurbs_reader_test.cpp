@@ -16,6 +16,13 @@ namespace fixtures = envcrust::testing;
 
 class NurbsReader : public testing::TempDirTest {};
 
+// The file's one patch.
+surfaces::NurbsPatch read_nurbs_patch(const std::filesystem::path& path) {
+  auto patches = read_nurbs_patches(path);
+  EXPECT_EQ(patches.size(), 1u) << path;
+  return patches.empty() ? surfaces::NurbsPatch{} : std::move(patches.front());
+}
+
 void expect_same_patch(const surfaces::NurbsPatch& expected, const surfaces::NurbsPatch& actual) {
   EXPECT_EQ(expected.degree_u, actual.degree_u);
   EXPECT_EQ(expected.degree_v, actual.degree_v);
@@ -157,18 +164,25 @@ TEST_F(NurbsReader, refuses_trimming_curves_it_cannot_place) {
                             "and composite curves 102 are read)");
 }
 
+TEST_F(NurbsReader, reads_every_surface_of_a_file_in_order) {
+  const auto cylinder = fixtures::cylinder_patch();
+  const auto from_iges = read_nurbs_patches(write("two.igs", fixtures::iges_text(cylinder, {}, 3)));
+  ASSERT_EQ(from_iges.size(), 3u);
+  for (const auto& patch : from_iges) expect_same_patch(cylinder, patch);
+  // A JSON file's entries in their order: the sphere, then the cylinder.
+  const auto from_json = read_nurbs_patches(write("two.json", fixtures::geomdl_json({fixtures::sphere_patch(), cylinder})));
+  ASSERT_EQ(from_json.size(), 2u);
+  expect_same_patch(fixtures::sphere_patch(), from_json[0]);
+  expect_same_patch(cylinder, from_json[1]);
+}
+
 TEST_F(NurbsReader, refuses_iges_files_it_cannot_read_whole) {
   const auto cylinder = fixtures::cylinder_patch();
   const std::string text = fixtures::iges_text(cylinder);
-  auto file = write("two.igs", fixtures::iges_text(cylinder, {}, 2));
-  EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
-            file.string() +
-                ": 2 rational B-spline surfaces (IGES entity 128): envcrust reads one patch per file (sample them "
-                "into a point file or mesh them to reconstruct the whole)");
   std::string other = text;
   for (std::size_t at = other.find("     128"); at != std::string::npos; at = other.find("     128", at))
     other.replace(at, 8, "     126");
-  file = write("curve.igs", other);
+  auto file = write("curve.igs", other);
   EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }),
             file.string() + ": no rational B-spline surface (IGES entity 128) in the file (its entities: 126)");
   // Cut after the directory and the first parameter line: the parameters end early.
@@ -186,7 +200,7 @@ TEST_F(NurbsReader, refuses_iges_files_it_cannot_read_whole) {
             file.string() + ": entity 128 at parameter line 1: '0.2x' is not a number");
 }
 
-TEST_F(NurbsReader, refuses_json_that_is_not_one_untrimmed_surface) {
+TEST_F(NurbsReader, refuses_json_that_is_not_untrimmed_surfaces) {
   const auto expect_refusal = [&](const std::string& name, const std::string& text, const std::string& problem) {
     const auto file = write(name, text);
     EXPECT_EQ(io_error_of([&] { (void)read_nurbs_patch(file); }), file.string() + ": " + problem);
@@ -197,7 +211,7 @@ TEST_F(NurbsReader, refuses_json_that_is_not_one_untrimmed_surface) {
   expect_refusal("c.json", R"({"shape": {"type": "surface", "data": [{"degree_v": 1}]}})",
                  "not a NURBS-Python surface: key 'degree_u' not found");
   expect_refusal("d.json", R"({"shape": {"type": "surface", "data": [{}, {}]}})",
-                 "2 surfaces in shape.data: envcrust reads one patch per file");
+                 "surface 1: not a NURBS-Python surface: key 'degree_u' not found");
   expect_refusal("e.json", R"({"shape": {"type": "surface", "data": [{"degree_u": 1, "degree_v": 1, "size_u": 2,
       "size_v": 2, "knotvector_u": [0, 0, 1, 1], "knotvector_v": [0, 0, 1, 1],
       "control_points": {"points": [[0, 0, 0], [0, 1, 0], [1, 0, 0]]}}]}})",
