@@ -110,7 +110,7 @@ JoinedMesh join_tessellations(const std::vector<TriangleMesh>& patches, double t
 
   // Each border vertex against the other patches' border edges near it: welded to an end
   // within the tolerance, else splitting the edge where it lies.
-  topology::UnionFind weld(mesh.vertices.size());
+  std::vector<std::pair<Index, Index>> welds;
   std::vector<std::vector<Split>> splits(borders.size());
   const double tol2 = tolerance * tolerance;
   std::vector<Primitive::Id> near;
@@ -131,7 +131,7 @@ JoinedMesh join_tessellations(const std::vector<TriangleMesh>& patches, double t
       gap2 = std::min(gap2, d2);
       const double da = CGAL::squared_distance(p, mesh.vertices[e.a]), db = CGAL::squared_distance(p, mesh.vertices[e.b]);
       if (std::min(da, db) <= tol2) {
-        weld.unite(v, da <= db ? e.a : e.b);
+        welds.emplace_back(v, da <= db ? e.a : e.b);
         continue;
       }
       const Vector3 ab = mesh.vertices[e.b] - mesh.vertices[e.a];
@@ -140,7 +140,7 @@ JoinedMesh join_tessellations(const std::vector<TriangleMesh>& patches, double t
     if (gap2 <= tol2) out.stats.largest_gap = std::max(out.stats.largest_gap, std::sqrt(gap2));
   }
 
-  // Split points become vertices of their own (welded to the vertex that made them), in order
+  // Split points become vertices of their own, welded to the vertex that made them, in order
   // along each edge; the same vertex twice, or two at one place, count once.
   std::vector<std::vector<Index>> new_vertices(borders.size());
   std::multimap<std::size_t, std::size_t> edges_of_face;  // split border edges by face
@@ -153,20 +153,13 @@ JoinedMesh join_tessellations(const std::vector<TriangleMesh>& patches, double t
       const auto added = static_cast<Index>(mesh.vertices.size());
       mesh.vertices.push_back(mesh.vertices[list[k].vertex]);
       new_vertices[s].push_back(added);
+      welds.emplace_back(added, list[k].vertex);
     }
     edges_of_face.emplace(borders[s].face, s);
     ++out.stats.split_edges;
   }
-  // The new vertices join the forest (after the originals, in creation order).
   topology::UnionFind all(mesh.vertices.size());
-  for (Index v = 0; v < patch_of.size(); ++v) all.unite(v, weld.find(v));
-  for (std::size_t s = 0; s < borders.size(); ++s) {
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < splits[s].size() && k < new_vertices[s].size(); ++i) {
-      if (i > 0 && (splits[s][i].vertex == splits[s][i - 1].vertex || splits[s][i].t <= splits[s][i - 1].t)) continue;
-      all.unite(new_vertices[s][k++], splits[s][i].vertex);
-    }
-  }
+  for (const auto& [a, b] : welds) all.unite(a, b);
 
   // Faces with split border edges become fans: from the opposite corner when one edge is
   // split, else from a vertex added at the centroid (no fan triangle then lies on a line).

@@ -120,6 +120,31 @@ TEST_F(NurbsInput, the_shipped_models_of_several_patches_come_out_whole) {
   EXPECT_TRUE(creases_named) << c["notes"];
 }
 
+TEST_F(NurbsInput, a_trimmed_plate_and_the_tube_in_its_hole_are_one_open_sink) {
+  // IGES as CAD writes faces: the unit square trimmed by a round hole (144 over 128), and an
+  // untrimmed tube of the hole's radius hanging from it down to z = -0.5. Joined along the
+  // hole's circle: an annulus (chi 0) whose loops are the square's border and the tube's rim.
+  auto tube = cylinder_patch();  // z in [-1, 1]
+  for (auto& q : tube.control_points) q = Point3(0.5 + 0.25 * q.x(), 0.5 + 0.25 * q.y(), -0.25 * (1 - q.z()));
+  std::vector<IgesEntity> entities;
+  append_trimmed(entities, square_patch(), {}, {{iges_circle(0.5, 0.5, 0.25)}});
+  entities.push_back({128, iges_surface_values(tube), 0});
+  const std::string file = write("sink.igs", iges_file(entities));
+  const auto s = run_envcrust_json("sample " + file + " --mesh -o " + path("sink.ply") + " --json");
+  EXPECT_EQ(s["patches"], 2);
+  EXPECT_EQ(s["expected"]["euler_characteristic"], 0);
+  EXPECT_EQ(s["expected"]["boundary_loops"], 2);
+  const auto j = run_envcrust_json("reconstruct " + file + " -n 8000 -o " + path("r.ply") + " --json");
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  EXPECT_EQ(a["boundary_loops"], 2);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_EQ(a["is_orientable"], true);
+  EXPECT_LT(a["distance"]["hausdorff_rel_diag"].get<double>(), 0.01);
+  ASSERT_EQ(a["boundary_matches"].size(), 2u);
+  for (const auto& b : a["boundary_matches"]) EXPECT_LT(b["hausdorff_rel_diag"].get<double>(), 0.01) << b;
+}
+
 TEST_F(NurbsInput, patches_that_form_no_surface_are_refused_by_name) {
   const auto c = [](double x, double y, double z) { return Point3(x, y, z); };
   write("book.igs", iges_text(std::vector{bilinear_patch(c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1)),
