@@ -145,7 +145,7 @@ void run_boundary(BoundaryCommand& cmd) {
   if (!cmd.reference.empty()) {
     reference = load_reference(cmd.reference);
   } else if (is_parametric_spec(cmd.input)) {
-    reference = load_reference(cmd.input);
+    reference = load_reference(cmd.input, cmd.sampling.join);
   }
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
@@ -221,6 +221,7 @@ void register_boundary(CLI::App& app) {
   add_boundary_options(*sub, cmd->sampling);
   add_outlier_options(*sub, cmd->sampling);
   add_crease_options(*sub, cmd->sampling);
+  add_join_option(*sub, cmd->sampling.join);
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_boundary(*cmd); });
 }

@@ -126,6 +126,7 @@ void register_powercrust(CLI::App& app) {
       ->capture_default_str()
       ->check(whole_number_in(1, kMaxPointCount));
   sub->add_option("--seed", cmd->sampling.seed, "Seed of builtin sampling")->check(seed_number())->capture_default_str();
+  add_join_option(*sub, cmd->sampling.join);
   const std::map<std::string, powercrust::LabelPreset> presets = {{"code", powercrust::LabelPreset::Code},
                                                                   {"readme", powercrust::LabelPreset::Readme}};
   sub->add_option("--preset", cmd->options.preset,

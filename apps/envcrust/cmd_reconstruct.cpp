@@ -113,6 +113,7 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "(normals = outward conormals)");
   add_outlier_options(sub, cmd.sampling);
   add_crease_options(sub, cmd.sampling);
+  add_join_option(sub, cmd.sampling.join);
   sub.add_option("--outliers-out", cmd.outliers_output,
                  "Also write the stray samples removed from a point file (.xyz/.ply; none: an empty file)");
 }
@@ -364,7 +365,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
       reference = std::move(*given_reference);
       j["reference"] = cmd.reference;
     } else if (is_parametric_spec(cmd.input) || loaded.source == "mesh") {
-      reference = load_reference(cmd.input);
+      reference = load_reference(cmd.input, cmd.sampling.join);
       j["reference"] = cmd.input;
     } else {
       reference.points = loaded.samples.points;

@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "curve_output.h"
 #include "inputs.h"
+#include "surface_input.h"
 
 #include "envcrust/io.h"
 #include "envcrust/surfaces.h"
@@ -20,6 +21,7 @@ struct SampleCommand {
   bool mesh = false;
   bool list = false;
   std::string boundary_output;
+  models::JoinOptions join;
   CommonFlags common;
 };
 
@@ -69,7 +71,7 @@ void run_sample(const SampleCommand& cmd) {
   if (!cmd.output.empty()) io::check_output_path(cmd.output, cmd.mesh ? io::OutputKind::Mesh : io::OutputKind::Points);
   if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Polyline);
   check_distinct_outputs({{"-o", cmd.output}, {"--boundary-out", cmd.boundary_output}});
-  const auto model = parametric_model(is_parametric_spec(cmd.surface) ? cmd.surface : "builtin:" + cmd.surface);
+  const auto model = parametric_model(is_parametric_spec(cmd.surface) ? cmd.surface : "builtin:" + cmd.surface, cmd.join);
   nlohmann::json report = {{"surface", cmd.surface}};
   if (!cmd.output.empty()) {
     if (cmd.mesh) {
@@ -98,7 +100,12 @@ void run_sample(const SampleCommand& cmd) {
     report["boundary_files"] = files;
   }
   report["expected"] = expected_json(model->expected_topology());
-  if (model->patch_count() > 1) report["patches"] = model->patch_count();
+  if (model->patch_count() > 1) {
+    report["patches"] = model->patch_count();
+    report["joins"] = {{"joined_edges", model->joins().joined_edges}, {"largest_gap", model->joins().largest_gap},
+                       {"tolerance", model->joins().tolerance}, {"near_misses", model->joins().near_misses},
+                       {"nearest_miss", model->joins().nearest_miss}};
+  }
   if (cmd.common.json) {
     print_json(report);
   } else if (!cmd.common.quiet) {
@@ -136,6 +143,7 @@ void register_sample(CLI::App& app) {
       ->excludes(seed);
   sub->add_option("--boundary-out", cmd->boundary_output,
                   "Write the true boundary loops as polylines (FILE.i.polyline when several)");
+  add_join_option(*sub, cmd->join);
   sub->add_flag("--list", cmd->list, "List the built-in surfaces with their expected topology");
   add_common_flags(*sub, cmd->common);
   sub->callback([cmd] { run_sample(*cmd); });

@@ -21,7 +21,7 @@ bool is_builtin_spec(const std::string& spec) { return spec.rfind(kBuiltinPrefix
 
 bool is_parametric_spec(const std::string& spec) { return is_builtin_spec(spec) || io::is_nurbs_file(spec); }
 
-std::optional<models::PatchModel> parametric_model(const std::string& spec) {
+std::optional<models::PatchModel> parametric_model(const std::string& spec, const models::JoinOptions& join) {
   if (is_builtin_spec(spec)) {
     std::vector<std::unique_ptr<surfaces::Surface>> one;
     one.push_back(surfaces::make_builtin(spec.substr(kBuiltinPrefix.size())));
@@ -41,7 +41,7 @@ std::optional<models::PatchModel> parametric_model(const std::string& spec) {
     }
   }
   try {
-    return models::PatchModel(std::move(patches), stem);
+    return models::PatchModel(std::move(patches), stem, join);
   } catch (const InvalidInput& e) {
     throw InvalidInput(spec + ": " + e.what());
   }
@@ -52,10 +52,10 @@ TriangleMesh load_mesh(const std::string& spec) {
   return io::read_triangle_mesh(spec);
 }
 
-analysis::Reference load_reference(const std::string& spec) {
+analysis::Reference load_reference(const std::string& spec, const models::JoinOptions& join) {
   analysis::Reference reference;
   if (is_parametric_spec(spec)) {
-    const auto model = parametric_model(spec);
+    const auto model = parametric_model(spec, join);
     reference.mesh = model->truth();
     for (const auto& curve : model->boundary_curves(2e-3 * model->diagonal()))
       reference.boundary.push_back(curve.polyline());

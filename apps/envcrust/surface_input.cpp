@@ -361,6 +361,15 @@ void add_crease_options(CLI::App& sub, BuiltinSampling& sampling) {
       ->check(CLI::IsMember({"round", "join"}));
 }
 
+void add_join_option(CLI::App& sub, models::JoinOptions& join) {
+  sub.add_option("--join-tolerance", join.tolerance_rel_diag,
+                 "NURBS files of several patches: join edges of two patches closer than this fraction of the "
+                 "model's diagonal (CAD faces meet within the modeller's tolerance; a note counts the border vertices "
+                 "left open within 20 times it)")
+      ->capture_default_str()
+      ->check(number_in(0, 0.05, false, true));
+}
+
 void add_outlier_options(CLI::App& sub, BuiltinSampling& sampling) {
   sub.add_flag("--keep-outliers", [&sampling](std::int64_t) { sampling.remove_outliers = false; },
                "Point files: keep the stray samples that are otherwise removed first (points farther from the "
@@ -376,7 +385,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     throw UsageError("--as-points applies to mesh files: " + spec + " is sampled with its exact normals");
   if (is_parametric_spec(spec)) {
     // A NURBS file is read as a built-in surface is (out.kind keeps is_builtin: no scan cuts).
-    const auto model = parametric_model(spec);
+    const auto model = parametric_model(spec, sampling.join);
     surfaces::SampleOptions o;
     o.count = sampling.count;
     o.noise_rel_diag = sampling.noise_rel_diag;

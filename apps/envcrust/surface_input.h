@@ -4,6 +4,7 @@
 
 #include "envcrust/boundary.h"
 #include "envcrust/envelope.h"
+#include "envcrust/models.h"
 #include "envcrust/pipeline.h"
 
 #include <CLI/CLI.hpp>
@@ -38,6 +39,8 @@ struct BuiltinSampling {
   /// normals by fitted normal lines, which round the creases off; true (`--creases join`)
   /// keeps them and hands the creases to the envelope and the sheet (SurfaceSamples::creases).
   bool join_creases = false;
+  /// NURBS files of several patches: how the patches are joined (--join-tolerance).
+  models::JoinOptions join;
 };
 
 /// Samples of M and how they were obtained (for the report). Point files get their normal
@@ -67,6 +70,9 @@ CLI::Option* add_boundary_options(CLI::App& command, BuiltinSampling& sampling);
 
 /// `--creases round|join` (BuiltinSampling::join_creases).
 void add_crease_options(CLI::App& command, BuiltinSampling& sampling);
+
+/// `--join-tolerance` (models::JoinOptions::tolerance_rel_diag) into `join`.
+void add_join_option(CLI::App& command, models::JoinOptions& join);
 
 /// Add --keep-outliers (point files: keep the samples find_outliers flags).
 void add_outlier_options(CLI::App& command, BuiltinSampling& sampling);

@@ -29,6 +29,10 @@ struct JoinStats {
   /// The largest distance between the patches' borders where they were joined.
   double largest_gap = 0;
   double tolerance = 0;  ///< the tolerance used, in model units
+  /// Border vertices left open that lie within 20 tolerances of another patch's border (faces
+  /// of a model meant to meet, less closely than the tolerance), and the nearest such gap.
+  std::size_t near_misses = 0;
+  double nearest_miss = 0;
 };
 
 /// Border edges of the patches' tessellations that lie within `tolerance` of another patch's

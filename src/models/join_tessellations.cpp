@@ -17,6 +17,10 @@
 namespace envcrust::models {
 namespace {
 
+// Border vertices left open within this many tolerances of another patch's border are
+// reported (JoinStats::near_misses): a model whose faces meet less closely than the tolerance.
+constexpr double kNearMissFactor = 20.0;
+
 using Segment = Kernel::Segment_3;
 using Primitive = CGAL::AABB_segment_primitive<Kernel, std::vector<Segment>::const_iterator>;
 using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
@@ -118,17 +122,17 @@ JoinedMesh join_tessellations(const std::vector<TriangleMesh>& patches, double t
     if (!is_border[v]) continue;
     const Point3& p = mesh.vertices[v];
     near.clear();
-    const CGAL::Bbox_3 box(p.x() - tolerance, p.y() - tolerance, p.z() - tolerance, p.x() + tolerance,
-                           p.y() + tolerance, p.z() + tolerance);
+    const double reach = kNearMissFactor * tolerance;  // near misses are looked for too
+    const CGAL::Bbox_3 box(p.x() - reach, p.y() - reach, p.z() - reach, p.x() + reach, p.y() + reach, p.z() + reach);
     tree.all_intersected_primitives(box, std::back_inserter(near));
-    double gap2 = tol2 * 2;  // to the nearest border of another patch
+    double gap2 = reach * reach * 2;  // to the nearest border of another patch
     for (const auto id : near) {
       const auto s = static_cast<std::size_t>(id - segments.cbegin());
       const BorderEdge& e = borders[s];
       if (patch_of[e.a] == patch_of[v]) continue;
       const double d2 = CGAL::squared_distance(p, segments[s]);
-      if (d2 > tol2) continue;
       gap2 = std::min(gap2, d2);
+      if (d2 > tol2) continue;
       const double da = CGAL::squared_distance(p, mesh.vertices[e.a]), db = CGAL::squared_distance(p, mesh.vertices[e.b]);
       if (std::min(da, db) <= tol2) {
         welds.emplace_back(v, da <= db ? e.a : e.b);
@@ -137,7 +141,12 @@ JoinedMesh join_tessellations(const std::vector<TriangleMesh>& patches, double t
       const Vector3 ab = mesh.vertices[e.b] - mesh.vertices[e.a];
       splits[s].push_back({((p - mesh.vertices[e.a]) * ab) / ab.squared_length(), v});
     }
-    if (gap2 <= tol2) out.stats.largest_gap = std::max(out.stats.largest_gap, std::sqrt(gap2));
+    if (gap2 <= tol2) {
+      out.stats.largest_gap = std::max(out.stats.largest_gap, std::sqrt(gap2));
+    } else if (gap2 <= reach * reach) {
+      ++out.stats.near_misses;
+      out.stats.nearest_miss = out.stats.nearest_miss > 0 ? std::min(out.stats.nearest_miss, std::sqrt(gap2)) : std::sqrt(gap2);
+    }
   }
 
   // Split points become vertices of their own, welded to the vertex that made them, in order

@@ -88,6 +88,9 @@ std::string PatchModel::description() const {
   std::ostringstream s;
   s << std::setprecision(3) << patches_.size() << " patches joined along " << joins_.joined_edges
     << " edges of their tessellations (largest gap " << joins_.largest_gap << ", tolerance " << joins_.tolerance << ")";
+  if (joins_.near_misses > 0)
+    s << "; " << joins_.near_misses << " border vertices left open lie " << joins_.nearest_miss
+      << " or more from another patch's border, within 20 times the tolerance (a larger one joins them)";
   return s.str();
 }
 

@@ -145,6 +145,24 @@ TEST_F(NurbsInput, a_trimmed_plate_and_the_tube_in_its_hole_are_one_open_sink) {
   for (const auto& b : a["boundary_matches"]) EXPECT_LT(b["hausdorff_rel_diag"].get<double>(), 0.01) << b;
 }
 
+TEST_F(NurbsInput, join_tolerance_joins_faces_that_meet_less_closely) {
+  // The open box with its bottom 0.003 below its sides: beyond the default tolerance (5e-4 of
+  // the diagonal, 0.00087), the bottom is a piece of its own (chi 1 = a tube of sides + a
+  // disc, 3 loops) and the gap is named; --join-tolerance 0.002 (0.0035) joins it.
+  auto patches = open_box_patches();
+  for (auto& q : patches[0].control_points) q = Point3(q.x(), q.y(), q.z() - 0.003);
+  const std::string file = write("gap.igs", iges_text(patches));
+  const auto apart = run_envcrust_json("sample " + file + " --mesh -o " + path("a.ply") + " --json");
+  EXPECT_EQ(apart["expected"]["boundary_loops"], 3);
+  EXPECT_EQ(apart["joins"]["near_misses"], 4);  // the bottom's corners (the sides' lower ones are joined to each other)
+  EXPECT_NEAR(apart["joins"]["nearest_miss"].get<double>(), 0.003, 1e-9);
+  const auto joined = run_envcrust_json("sample " + file + " --join-tolerance 0.002 --mesh -o " + path("j.ply") + " --json");
+  EXPECT_EQ(joined["expected"]["euler_characteristic"], 1);
+  EXPECT_EQ(joined["expected"]["boundary_loops"], 1);
+  EXPECT_EQ(joined["joins"]["near_misses"], 0);
+  EXPECT_NEAR(joined["joins"]["largest_gap"].get<double>(), 0.003, 1e-9);
+}
+
 TEST_F(NurbsInput, patches_that_form_no_surface_are_refused_by_name) {
   const auto c = [](double x, double y, double z) { return Point3(x, y, z); };
   write("book.igs", iges_text(std::vector{bilinear_patch(c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1)),

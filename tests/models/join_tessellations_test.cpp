@@ -52,6 +52,10 @@ TEST(JoinTessellations, welds_borders_within_the_tolerance_and_leaves_wider_gaps
   EXPECT_EQ(u.components.size(), 2u);
   EXPECT_EQ(u.euler_characteristic, 2);
   EXPECT_EQ(far.stats.joined_edges, 0u);
+  // Left open, but within 20 tolerances: the three border vertices on either side are near misses.
+  EXPECT_EQ(far.stats.near_misses, 6u);
+  EXPECT_NEAR(far.stats.nearest_miss, 1e-4, 1e-9);
+  EXPECT_EQ(near.stats.near_misses, 0u);
 }
 
 TEST(JoinTessellations, fans_a_face_split_on_two_edges_from_its_centre) {
