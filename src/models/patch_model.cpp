@@ -7,6 +7,8 @@
 #include "envcrust/mesh.h"
 #include "envcrust/topology.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -43,6 +45,27 @@ void check_surface(const TriangleMesh& mesh, const topology::MeshTopology& topol
                        " points only (a vertex whose faces form several fans): the patches form no surface");
 }
 
+// The patches' tessellations stay this close to them, in fractions of the smaller of the
+// patch's and the model's diagonal (tessellate's default, 1e-4 of the patch's own).
+constexpr double kChordErrorRelDiag = 1e-4;
+
+// Points of the patch on a 33 x 33 parameter grid, those in its kept region (all of them if
+// none is): a coarse extent, for the tessellations' error bound.
+std::vector<Point3> coarse_points(const surfaces::Surface& patch) {
+  constexpr int n = 32;
+  const surfaces::ParameterDomain d = patch.domain();
+  std::vector<Point3> kept, all;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const double u = d.u0 + (d.u1 - d.u0) * i / n, v = d.v0 + (d.v1 - d.v0) * j / n;
+      const Point3 p = patch.evaluate(u, v).position;
+      all.push_back(p);
+      if (patch.contains(u, v)) kept.push_back(p);
+    }
+  }
+  return kept.size() >= 2 ? kept : all;
+}
+
 }  // namespace
 
 PatchModel::PatchModel(std::vector<std::unique_ptr<surfaces::Surface>> patches, std::string name,
@@ -56,12 +79,23 @@ PatchModel::PatchModel(std::vector<std::unique_ptr<surfaces::Surface>> patches, 
     diagonal_ = surfaces::bbox_diagonal(*patches_.front());
     return;
   }
-  // Each patch within 1e-4 of its own diagonal (tessellate's default), so within the
-  // tolerance of the model's.
+  // Each patch within 1e-4 of the smaller of its diagonal and the model's (coarse estimates),
+  // so within the joining tolerance.
+  std::vector<double> patch_diagonals;
+  std::vector<Point3> coarse;
+  for (const auto& p : patches_) {
+    const auto points = coarse_points(*p);
+    patch_diagonals.push_back(mesh::bbox_diagonal(points));
+    coarse.insert(coarse.end(), points.begin(), points.end());
+  }
+  const double coarse_diagonal = mesh::bbox_diagonal(coarse);
   std::vector<TriangleMesh> parts;
   std::vector<Point3> all;
-  for (const auto& p : patches_) {
-    parts.push_back(surfaces::tessellate(*p));
+  for (std::size_t i = 0; i < patches_.size(); ++i) {
+    const auto& p = patches_[i];
+    surfaces::TessellationOptions o;
+    o.max_error = kChordErrorRelDiag * std::min(patch_diagonals[i], coarse_diagonal);
+    parts.push_back(surfaces::tessellate(*p, o));
     areas_.push_back(mesh::total_area(parts.back()));
     all.insert(all.end(), parts.back().vertices.begin(), parts.back().vertices.end());
   }
@@ -96,6 +130,7 @@ std::string PatchModel::description() const {
 
 std::vector<BoundaryCurve> PatchModel::boundary_curves(double max_spacing) const {
   if (patches_.size() == 1) return surfaces::boundary_curves(*patches_.front(), max_spacing);
+  if (expected_.boundary_loops == 0) return {};
   std::vector<std::vector<BoundaryCurve>> patch_curves;
   for (const auto& p : patches_) patch_curves.push_back(surfaces::boundary_curves(*p, max_spacing));
   return model_boundary_curves(truth_, patch_curves, joins_.tolerance);
@@ -120,14 +155,20 @@ PointSet PatchModel::sample(const surfaces::SampleOptions& options) const {
   }
   std::stable_sort(remainders.begin(), remainders.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   for (std::size_t k = 0; given < options.count; ++k, ++given) ++counts[remainders[k % remainders.size()].second];
-  PointSet out;
-  for (std::size_t i = 0; i < patches_.size(); ++i) {
-    if (counts[i] == 0) continue;
+  // A stream per patch, so the patches are sampled in parallel and the result is a function of
+  // the seed (each patch's sampling bounds its area element on a fine grid first: most of the
+  // time for small counts, 10 ms a patch).
+  std::vector<PointSet> parts(patches_.size());
+  tbb::parallel_for(std::size_t{0}, patches_.size(), [&](std::size_t i) {
+    if (counts[i] == 0) return;
     surfaces::SampleOptions o = options;
     o.count = counts[i];
     o.noise_rel_diag = 0;
-    o.seed = options.seed * 1000003 + i;  // a stream per patch
-    PointSet part = surfaces::sample_surface(*patches_[i], o);
+    o.seed = options.seed * 1000003 + i;
+    parts[i] = surfaces::sample_surface(*patches_[i], o);
+  });
+  PointSet out;
+  for (const auto& part : parts) {
     out.points.insert(out.points.end(), part.points.begin(), part.points.end());
     out.normals.insert(out.normals.end(), part.normals.begin(), part.normals.end());
   }

@@ -191,11 +191,14 @@ TriangleMesh tessellate(const Surface& surface, const TessellationOptions& optio
   if (options.nu && options.nv) {
     r = {*options.nu, *options.nv};
   } else {
-    if (!(options.max_error_rel_diag > 0) || !std::isfinite(options.max_error_rel_diag)) {
+    if (options.max_error && (!(*options.max_error > 0) || !std::isfinite(*options.max_error)))
+      throw InvalidOptions("max_error must be > 0 (got " + format_value(*options.max_error) + ")");
+    if (!options.max_error && (!(options.max_error_rel_diag > 0) || !std::isfinite(options.max_error_rel_diag))) {
       throw InvalidOptions("max_error_rel_diag must be > 0 (got " +
                            format_value(options.max_error_rel_diag) + ")");
     }
-    r = choose_resolution(surface, d, options.max_error_rel_diag * bbox_diagonal(surface), minimum);
+    const double tol = options.max_error ? *options.max_error : options.max_error_rel_diag * bbox_diagonal(surface);
+    r = choose_resolution(surface, d, tol, minimum);
     if (options.nu) r.nu = *options.nu;
     if (options.nv) r.nv = *options.nv;
   }

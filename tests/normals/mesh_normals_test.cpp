@@ -65,8 +65,10 @@ TEST(MeshVertexNormalLines, SphereIsExact) {
 // The largest errors sit on boundary vertices (one-sided stars) of the coarse grid.
 TEST(MeshVertexNormalLines, MoebiusIsNonOrientableButWorks) {
   const auto moebius = surfaces::make_builtin("moebius");
-  for (const auto& options : {surfaces::TessellationOptions{},
-                              surfaces::TessellationOptions{1e-4, 400, 40}}) {
+  surfaces::TessellationOptions grid;
+  grid.nu = 400;
+  grid.nv = 40;
+  for (const auto& options : {surfaces::TessellationOptions{}, grid}) {
     const TriangleMesh mesh = surfaces::tessellate(*moebius, options);
     const auto n = normals::mesh_vertex_normal_lines(mesh);
     std::vector<double> err;
