@@ -130,7 +130,7 @@ void load_mesh_samples(TriangleMesh mesh, const std::string& spec, bool join_cre
 // patches meet at an angle (a box of flat faces), handled as a point file's jumping normals are.
 void load_model_creases(const models::PatchModel& model, bool join_creases, LoadedSurface& out) {
   out.notes.push_back(model.description());
-  out.kind.genus = topology::total_genus(topology::analyze_topology(model.truth()));
+  out.kind.genus = model.genus();
   auto sharp = mesh::sharp_edges(model.truth(), kTearingBendDeg);
   if (!is_long_crease(sharp, model.truth().vertices)) return;
   out.notes.push_back(crease_note("the patches meet", sharp, "edges", join_creases ? kJoined : kRoundedOff));

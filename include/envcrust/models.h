@@ -6,6 +6,7 @@
 #include "envcrust/types.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,9 @@ class PatchModel {
   /// each patch, joined).
   [[nodiscard]] const TriangleMesh& truth() const { return truth_; }
   [[nodiscard]] const surfaces::ExpectedTopology& expected_topology() const { return expected_; }
+  /// Handles and cross-caps summed over the pieces (topology::total_genus of the ground truth);
+  /// unset for a single patch (not computed: the surface gives its topology itself).
+  [[nodiscard]] std::optional<long> genus() const { return genus_; }
   [[nodiscard]] const JoinStats& joins() const { return joins_; }
   /// Bounding-box diagonal (a single patch's surfaces::bbox_diagonal; of the ground truth for several).
   [[nodiscard]] double diagonal() const { return diagonal_; }
@@ -90,7 +94,8 @@ class PatchModel {
   TriangleMesh truth_;
   surfaces::ExpectedTopology expected_;
   JoinStats joins_;
-  std::vector<double> areas_;  ///< of each patch's tessellation (several patches only)
+  std::vector<double> areas_;
+  std::optional<long> genus_;  ///< of each patch's tessellation (several patches only)
   double diagonal_ = 0;
 };
 

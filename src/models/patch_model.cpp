@@ -108,6 +108,7 @@ PatchModel::PatchModel(std::vector<std::unique_ptr<surfaces::Surface>> patches, 
   topology::orient_faces(truth_);  // the patches' windings may disagree
   expected_.euler_characteristic = static_cast<int>(topology.euler_characteristic);
   expected_.is_orientable = topology.is_orientable;
+  genus_ = topology::total_genus(topology);
   std::vector<Polyline> loops;
   for (const auto& loop : topology.boundary_loops) loops.push_back(loop.polyline(topology.points));
   surfaces::set_boundary_loops(loops, expected_);
