@@ -41,14 +41,14 @@ BoundaryVertex reversed(BoundaryVertex v) {
 std::vector<BoundaryCurve> model_boundary_curves(const TriangleMesh& truth,
                                                  const std::vector<std::vector<BoundaryCurve>>& patch_curves,
                                                  double tolerance) {
-  const auto topology = topology::analyze_topology(truth);
-  const auto& loops = topology.boundary_loops;
+  // The loops alone (the truth is welded already: no full analysis needed).
+  const auto loops = topology::boundary_loops(truth);
   if (loops.empty()) return {};
   // The loops' segments, with the loop and arc length where each starts.
   std::vector<Segment> segments;
   std::vector<std::pair<std::size_t, double>> segment_start;
   for (std::size_t l = 0; l < loops.size(); ++l) {
-    const auto polyline = loops[l].polyline(topology.points);
+    const auto polyline = loops[l].polyline(truth.vertices);
     double s = 0;
     for (std::size_t k = 0; k < polyline.size(); ++k) {
       const Point3& a = polyline[k];
