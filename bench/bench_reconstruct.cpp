@@ -19,6 +19,7 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -74,18 +75,27 @@ int main(int argc, char** argv) {
       bench::take_peak_mb();  // the peak below is the reconstruction's, sampling excluded
       auto t0 = std::chrono::steady_clock::now();
       if (point_clouds) {
-        const auto strays = outliers::find_outliers(samples.points);
+        // As `reconstruct` does for a point file: one neighbour search for the three passes
+        // (its time counted with the stray samples'), freed before the reconstruction.
+        auto table = std::make_unique<NeighbourTable>(samples.points, 32);
+        const auto strays = outliers::find_outliers(samples.points, *table);
+        std::vector<char> keep(samples.points.size());
         std::vector<Point3> kept;
-        for (std::size_t i = 0; i < samples.points.size(); ++i)
-          if (!strays.is_outlier[i]) kept.push_back(samples.points[i]);
+        for (std::size_t i = 0; i < samples.points.size(); ++i) {
+          keep[i] = strays.is_outlier[i] ? 0 : 1;
+          if (keep[i]) kept.push_back(samples.points[i]);
+        }
+        if (kept.size() < samples.points.size())
+          table = std::make_unique<NeighbourTable>(table->subset(samples.points, keep));
         samples.points = std::move(kept);
         outliers_s = seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
-        samples.normals = normals::estimate_normal_lines(samples.points);
+        samples.normals = normals::estimate_normal_lines(samples.points, *table);
         normals_s = seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
-        samples.boundary = boundary::detect_boundary(samples.points, samples.normals).curves;
+        samples.boundary = boundary::detect_boundary(samples.points, samples.normals, *table).curves;
         boundary_s = seconds_since(t0);
+        table.reset();
         t0 = std::chrono::steady_clock::now();
       }
       const auto result = pipeline::reconstruct(samples, options);

@@ -231,10 +231,28 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
                         const Progress& progress, LoadedSurface& out) {
   PointSet points = usable_points(std::move(read), spec, out.notes);
   out.source = "points";
+  // One neighbour search serves the stray samples, the normal lines and the boundary's
+  // angle gaps (each searched its own: at 1M points the passes took 7.4-8.8 s, now 4.9-5.7 s).
+  const outliers::OutlierOptions outlier_options;
+  const normals::NormalOptions normal_options;
+  const bool fits_normals = !points.has_normals();
+  const bool detects = sampling.boundary_files.empty() && sampling.detect_boundary;
+  unsigned k = 0;
+  if (sampling.remove_outliers) k = std::max(k, outlier_options.neighbors);
+  if (fits_normals) k = std::max(k, static_cast<unsigned>(normal_options.neighbors));
+  if (detects) k = std::max(k, static_cast<unsigned>(std::max(sampling.boundary.neighbors, 6)));
+  NeighbourTable table;
+  if (k > 0) {
+    progress.report("input: neighbours", 0.05);
+    table = NeighbourTable(points.points, k);
+  }
   if (sampling.remove_outliers) {
     progress.report("input: outliers", 0.1);
-    const auto found = outliers::find_outliers(points.points);
+    const auto found = outliers::find_outliers(points.points, table, outlier_options);
     if (found.count() > 0) {
+      std::vector<char> keep(found.is_outlier.size());
+      for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = found.is_outlier[i] ? 0 : 1;
+      table = table.subset(points.points, keep);
       PointSet kept;
       for (std::size_t i = 0; i < points.points.size(); ++i) {
         if (found.is_outlier[i]) {
@@ -279,10 +297,10 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
     }
   } else {
     progress.report("input: normals", 0.3);
-    normals::NormalOptions o;
-    points.normals = normals::estimate_normal_lines(points.points, o);
+    points.normals = normals::estimate_normal_lines(points.points, table, normal_options);
     out.kind.are_normals_estimated = true;
-    out.notes.push_back("normal lines estimated by PCA over " + std::to_string(o.neighbors) + " neighbours");
+    out.notes.push_back("normal lines estimated by PCA over " + std::to_string(normal_options.neighbors) +
+                        " neighbours");
   }
   out.samples.points = std::move(points.points);
   out.samples.normals = std::move(points.normals);
@@ -304,7 +322,7 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
       for (auto& w : curves.warnings) out.notes.push_back(std::move(w));
     } else if (sampling.detect_boundary) {
       progress.report("input: boundary", 0.6);
-      auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, sampling.boundary);
+      auto detection = boundary::detect_boundary(out.samples.points, out.samples.normals, table, sampling.boundary);
       out.notes.push_back("boundary detected: " + std::to_string(detection.curves.size()) + " curves (" +
                           std::to_string(detection.dropped_loops) + " short loops dropped)");
       out.samples.boundary = std::move(detection.curves);

@@ -2,6 +2,7 @@
 // linking, ordering, frames; METHOD.md section 3.3c-d), or read off a triangle mesh (section 1).
 #pragma once
 
+#include "envcrust/neighbour_table.h"
 #include "envcrust/types.h"
 
 #include <cstddef>
@@ -155,6 +156,12 @@ struct BoundaryDetection {
 BoundaryDetection detect_boundary(const std::vector<Point3>& points,
                                   const std::vector<Vector3>& normal_lines,
                                   const BoundaryOptions& options = {});
+
+/// The same with the neighbours searched already (a table of `points` with k >= max(6,
+/// `neighbors`)): a point file's stages share one search.
+/// @throws also InvalidOptions if the table's size or k does not fit.
+BoundaryDetection detect_boundary(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
+                                  const NeighbourTable& table, const BoundaryOptions& options = {});
 
 /// Boundary curves through boundary points the user gives instead of detecting them (a loop
 /// picked in a viewer, the vertices of a known cut, or a `--boundary-out` file edited by hand).

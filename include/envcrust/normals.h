@@ -3,6 +3,7 @@
 #pragma once
 
 #include "envcrust/mesh.h"
+#include "envcrust/neighbour_table.h"
 #include "envcrust/types.h"
 
 #include <vector>
@@ -15,6 +16,9 @@ namespace envcrust::normals {
 /// @throws InvalidOptions if k < 2; InvalidInput on a non-finite coordinate;
 /// DegenerateInput with fewer than 3 points. k is capped at the number of other points.
 double average_spacing(const std::vector<Point3>& points, int k = 6);
+/// The same from neighbours searched already (a table of `points` with k >= `k`).
+/// @throws also InvalidOptions if the table's size or k does not fit.
+double average_spacing(const std::vector<Point3>& points, const NeighbourTable& table, int k);
 
 /// How normal lines are fitted to the k nearest neighbours.
 enum class NormalMethod {
@@ -44,7 +48,7 @@ enum class NormalMethod {
 struct NormalOptions {
   /// Fitting method. PCA: robust under noise, accurate enough on clean data (table above).
   NormalMethod method = NormalMethod::Pca;
-  /// Neighbours per fit (k nearest, the point itself included by CGAL), >= 6 (a degree-2
+  /// Neighbours per fit (k nearest others; the fit takes the point itself too), >= 6 (a degree-2
   /// jet needs 6). 24: half the noisy error of k 16 at no cost on clean data (table above).
   int neighbors = 24;
   /// Degree of the jet for NormalMethod::Jet, 1..4 (ignored by PCA). 2 fits curvature.
@@ -56,6 +60,12 @@ struct NormalOptions {
 /// @throws InvalidOptions naming the field and value; InvalidInput on a non-finite coordinate;
 /// DegenerateInput with fewer than 3 points.
 std::vector<Vector3> estimate_normal_lines(const std::vector<Point3>& points,
+                                           const NormalOptions& options = {});
+
+/// The same with the neighbours searched already (a table of `points` with k >= `neighbors`;
+/// PCA fits each point and the first `neighbors` of its row, as CGAL's pca_estimate_normals
+/// would): a point file's stages share one search. Jet fitting searches its own. @throws also InvalidOptions if the table's size or k does not fit.
+std::vector<Vector3> estimate_normal_lines(const std::vector<Point3>& points, const NeighbourTable& table,
                                            const NormalOptions& options = {});
 
 /// Per vertex the dominant eigenvector of sum(area_f * n_f n_f^T) over its incident faces:

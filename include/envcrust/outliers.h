@@ -2,6 +2,7 @@
 // or far from every other point (scanner ghosts, specks in the air).
 #pragma once
 
+#include "envcrust/neighbour_table.h"
 #include "envcrust/types.h"
 
 #include <cstddef>
@@ -42,5 +43,11 @@ struct OutlierReport {
 /// With at most `neighbors` + 1 points nothing is flagged.
 /// @throws InvalidOptions naming the field and value.
 OutlierReport find_outliers(const std::vector<Point3>& points, const OutlierOptions& options = {});
+
+/// The same with the neighbours searched already (a table of `points` with k >= `neighbors`;
+/// the first `neighbors` of each row are used): a point file's stages share one search.
+/// @throws InvalidOptions also if the table's size or k does not fit.
+OutlierReport find_outliers(const std::vector<Point3>& points, const NeighbourTable& table,
+                            const OutlierOptions& options = {});
 
 }  // namespace envcrust::outliers

@@ -2,13 +2,13 @@
 // plane, with the outward conormal from the neighbour centroid checked against the gap bisector.
 #include "boundary_detail.h"
 
-#include "envcrust/mesh.h"
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <numbers>
+#include <span>
 
 namespace envcrust::boundary::detail {
 namespace {
@@ -21,7 +21,7 @@ struct PointTest {
 };
 
 PointTest test_point(std::size_t i, const std::vector<Point3>& points, const Vector3& n,
-                     const std::vector<std::size_t>& neighbors, double weak_threshold,
+                     std::span<const std::uint32_t> neighbors, double weak_threshold,
                      double strong_threshold, double min_agreement_cos) {
   // Tangent basis (u, w) of the plane perpendicular to n.
   const Vector3 helper = std::abs(n.x()) < 0.6 ? Vector3(1, 0, 0) : Vector3(0, 1, 0);
@@ -31,7 +31,6 @@ PointTest test_point(std::size_t i, const std::vector<Point3>& points, const Vec
   angles.reserve(neighbors.size());
   double cu = 0, cw = 0;
   for (const std::size_t j : neighbors) {
-    if (j == i) continue;
     const Vector3 d = points[j] - points[i];
     const double x = dot(d, u), y = dot(d, w);
     if (x == 0 && y == 0) continue;
@@ -67,23 +66,23 @@ PointTest test_point(std::size_t i, const std::vector<Point3>& points, const Vec
 }  // namespace
 
 Candidates angle_gap_candidates(const std::vector<Point3>& points,
-                                const std::vector<Vector3>& normals, const PointIndex& index,
+                                const std::vector<Vector3>& normals, const NeighbourTable& table,
                                 const BoundaryOptions& options) {
   const std::size_t n = points.size();
   const double strong = options.gap_threshold_deg * std::numbers::pi / 180.0;
   const double weak =
       std::min(options.gap_threshold_deg, options.weak_gap_threshold_deg) * std::numbers::pi / 180.0;
   const double min_cos = std::cos(options.conormal_agreement_deg * std::numbers::pi / 180.0);
-  const auto k = static_cast<std::size_t>(options.neighbors) + 1;  // the point itself comes back
-  // Queries along a Hilbert curve (mesh::hilbert_order); each test is independent of the
-  // order, so the result is the same.
-  const std::vector<std::size_t> order = mesh::hilbert_order(points);
+  const auto k = static_cast<std::size_t>(options.neighbors);
+  // Tests along the table's Hilbert curve (consecutive ones read the same points); each is
+  // independent of the order, so the result is the same.
+  const std::vector<std::size_t>& order = table.order();
   std::vector<PointTest> tests(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t r = range.begin(); r != range.end(); ++r) {
                         const std::size_t i = order[r];
-                        tests[i] = test_point(i, points, normals[i], index.nearest(points[i], k),
+                        tests[i] = test_point(i, points, normals[i], table.of(i).first(k),
                                               weak, strong, min_cos);
                       }
                     });

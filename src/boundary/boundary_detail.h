@@ -42,9 +42,10 @@ struct FlaggedSubset {
 };
 FlaggedSubset flagged_subset(const std::vector<Point3>& points, const Candidates& candidates);
 
-/// Angle-gap test on the `neighbors` nearest points of each point (angle_gap.cpp).
+/// Angle-gap test on the `neighbors` nearest points of each point (the first of its row of
+/// `table`, which has at least as many; angle_gap.cpp).
 Candidates angle_gap_candidates(const std::vector<Point3>& points,
-                                const std::vector<Vector3>& normals, const PointIndex& index,
+                                const std::vector<Vector3>& normals, const NeighbourTable& table,
                                 const BoundaryOptions& options);
 
 /// Hysteresis: keep strong candidates and the weak ones reachable from a strong one through

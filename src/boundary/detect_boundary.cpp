@@ -26,6 +26,9 @@ namespace {
 
 using detail::format_number;
 
+// Neighbours of the average spacing s (normals::average_spacing).
+constexpr int kSpacingNeighbours = 6;
+
 // Seed spacing of band_cycle, in spacings s: the flagged band is 1-2 s wide.
 constexpr double kBandSeedSpacing = 4.0;
 // Longest join between open arcs made into one loop, in s: a slot a few spacings wide whose
@@ -308,13 +311,27 @@ std::vector<Vector3> checked_normals(const std::vector<Point3>& points, const st
 BoundaryDetection detect_boundary(const std::vector<Point3>& points,
                                   const std::vector<Vector3>& normal_lines,
                                   const BoundaryOptions& options) {
+  checked_normals(points, normal_lines, options);
+  return detect_boundary(points, normal_lines,
+                         NeighbourTable(points, static_cast<unsigned>(std::max(options.neighbors, kSpacingNeighbours))),
+                         options);
+}
+
+BoundaryDetection detect_boundary(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
+                                  const NeighbourTable& table, const BoundaryOptions& options) {
   const std::vector<Vector3> normals = checked_normals(points, normal_lines, options);
+  const auto needed = static_cast<unsigned>(std::max(options.neighbors, kSpacingNeighbours));
+  if (table.size() != points.size() || table.k() < needed) {
+    throw InvalidOptions("boundary detection: a neighbour table of " + std::to_string(table.size()) + " rows of " +
+                         std::to_string(table.k()) + " for " + std::to_string(points.size()) + " points and " +
+                         std::to_string(needed) + " neighbours");
+  }
   BoundaryDetection out;
-  out.spacing = normals::average_spacing(points, 6);
+  out.spacing = normals::average_spacing(points, table, kSpacingNeighbours);
   const double s = out.spacing;
   const detail::PointIndex index(points);
 
-  detail::Candidates candidates = detail::angle_gap_candidates(points, normals, index, options);
+  detail::Candidates candidates = detail::angle_gap_candidates(points, normals, table, options);
   detail::keep_connected_to_strong(points, candidates, options.link_distance * s,
                                    options.link_min_conormal_dot);
   if (options.require_two_sided_support) {
@@ -359,7 +376,7 @@ BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
                        std::to_string(given.points.size()) + " boundary points");
   }
   BoundaryDetection out;
-  out.spacing = normals::average_spacing(points, 6);
+  out.spacing = normals::average_spacing(points, kSpacingNeighbours);
   const double s = out.spacing;
   const detail::PointIndex index(points);
   const auto k = static_cast<std::size_t>(options.neighbors) + 1;

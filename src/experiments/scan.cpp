@@ -52,14 +52,16 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
   envelope::SurfaceSamples samples;
   samples.points = scan.points.points;
   std::string normal_source = "from the file";
+  // One neighbour search for the normal fits and the boundary's angle gaps, as `reconstruct`.
+  const NeighbourTable neighbours(samples.points, static_cast<unsigned>(boundary::BoundaryOptions{}.neighbors));
   if (scan.points.has_normals()) {
     samples.normals = scan.points.normals;
   } else {
-    samples.normals = normals::estimate_normal_lines(samples.points);
+    samples.normals = normals::estimate_normal_lines(samples.points, neighbours);
     normal_source = "PCA";
   }
   step(options, "scan", 0.05);
-  const auto detection = boundary::detect_boundary(samples.points, samples.normals);
+  const auto detection = boundary::detect_boundary(samples.points, samples.normals, neighbours);
   samples.boundary = detection.curves;
 
   analysis::Reference reference;

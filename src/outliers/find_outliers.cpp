@@ -3,7 +3,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
-#include "envcrust/nearest_index.h"
+#include "envcrust/neighbour_table.h"
 
 #include <Eigen/Eigenvalues>
 #include <tbb/parallel_for.h>
@@ -74,44 +74,49 @@ Local fit(const Point3& p, const std::vector<Point3>& points, const std::uint32_
 
 OutlierReport find_outliers(const std::vector<Point3>& points, const OutlierOptions& options) {
   validate(options);
+  if (points.size() <= options.neighbors) return find_outliers(points, NeighbourTable(), options);
+  return find_outliers(points, NeighbourTable(points, options.neighbors), options);
+}
+
+OutlierReport find_outliers(const std::vector<Point3>& points, const NeighbourTable& table,
+                            const OutlierOptions& options) {
+  validate(options);
   OutlierReport report;
   const std::size_t n = points.size();
   report.is_outlier.assign(n, 0);
   const unsigned k = options.neighbors;
   if (n <= k) return report;
-  // Everything runs on a copy of the points along a Hilbert curve: consecutive queries touch
-  // the same tree nodes, and the kd-tree's indices point to nearby memory (in a scan's file
-  // order, each distance read was a cache miss). The result does not depend on the threads.
-  const std::vector<std::size_t> order = mesh::hilbert_order(points);
-  std::vector<Point3> sorted(n);
-  for (std::size_t r = 0; r < n; ++r) sorted[r] = points[order[r]];
-  const NearestIndex index(sorted);
-  std::vector<std::uint32_t> neighbours(n * k);
+  if (table.size() != n || table.k() < k) {
+    throw InvalidOptions("find_outliers: a neighbour table of " + std::to_string(table.size()) + " rows of " +
+                         std::to_string(table.k()) + " for " + std::to_string(n) + " points and " +
+                         std::to_string(k) + " neighbours");
+  }
+  // Rows in the table's Hilbert order: consecutive fits read the same points (in a scan's
+  // file order, each distance read was a cache miss). The result does not depend on threads.
+  const std::vector<std::size_t>& order = table.order();
   std::vector<Local> local(n);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
     std::vector<double> scratch;
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      std::uint32_t* mine = &neighbours[i * k];
-      unsigned found = 0;
-      for (const auto& [j, d] : index.nearest(sorted[i], k + 1))
-        if (j != i && found < k) mine[found++] = static_cast<std::uint32_t>(j);
-      local[i] = fit(sorted[i], sorted, mine, k, scratch);
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      const std::size_t i = order[r];
+      local[i] = fit(points[i], points, table.of(i).data(), k, scratch);
     }
   });
   std::vector<char> off_plane(n, 0), isolated(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& range) {
     std::vector<double> residuals, spacings;
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+    for (std::size_t r = range.begin(); r != range.end(); ++r) {
+      const std::size_t i = order[r];
       residuals.assign(1, local[i].residual);
       spacings.clear();
-      for (unsigned j = 0; j < k; ++j) {
-        residuals.push_back(local[neighbours[i * k + j]].residual);
-        spacings.push_back(local[neighbours[i * k + j]].mean_distance);
+      for (const std::uint32_t j : table.of(i).first(k)) {
+        residuals.push_back(local[j].residual);
+        spacings.push_back(local[j].mean_distance);
       }
       const Local& l = local[i];
-      off_plane[order[i]] = l.off_plane > options.off_plane_rel_radius * l.radius &&
-                            l.off_plane > options.off_plane_rel_noise * median_of(residuals);
-      isolated[order[i]] = l.mean_distance > options.isolated_rel_spacing * median_of(spacings);
+      off_plane[i] = l.off_plane > options.off_plane_rel_radius * l.radius &&
+                     l.off_plane > options.off_plane_rel_noise * median_of(residuals);
+      isolated[i] = l.mean_distance > options.isolated_rel_spacing * median_of(spacings);
     }
   });
   for (std::size_t i = 0; i < n; ++i) {

@@ -151,6 +151,27 @@ TEST(DetectBoundary, DeterministicAndFlagsMatchCurves) {
   }
 }
 
+// A point file's stages share one neighbour search: a table wider than the detection's 32
+// (the first 32 of each row count) gives the same curves; a table of other points or too
+// narrow is refused.
+TEST(DetectBoundary, FromASharedNeighbourTableAsFromItsOwnSearch) {
+  const test::Run a = test::run_detection("trefoil-ribbon", 6000, 0.0);
+  const auto lines = normals::estimate_normal_lines(a.samples.points);
+  const NeighbourTable wide(a.samples.points, 40);
+  const auto b = boundary::detect_boundary(a.samples.points, lines, wide);
+  EXPECT_EQ(a.detection.curves.size(), 2u);
+  EXPECT_EQ(a.detection.is_boundary_point, b.is_boundary_point);
+  ASSERT_EQ(a.detection.curves.size(), b.curves.size());
+  for (std::size_t c = 0; c < b.curves.size(); ++c) EXPECT_EQ(a.detection.curves[c].polyline(), b.curves[c].polyline());
+  try {
+    (void)boundary::detect_boundary(a.samples.points, lines, NeighbourTable(a.samples.points, 24));
+    FAIL() << "a table of 24 neighbours accepted";
+  } catch (const InvalidOptions& e) {
+    EXPECT_EQ(std::string(e.what()), "boundary detection: a neighbour table of 6000 rows of 24 for 6000 points and "
+                                     "32 neighbours");
+  }
+}
+
 void expect_options_error(const boundary::BoundaryOptions& options, const std::string& message) {
   const std::vector<Point3> points(40, Point3(0, 0, 0));
   const std::vector<Vector3> normals(40, Vector3(0, 0, 1));

@@ -6,6 +6,7 @@
 #include "envcrust/normals.h"
 #include "envcrust/surfaces.h"
 
+#include <CGAL/pca_estimate_normals.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -138,6 +139,32 @@ TEST(AverageSpacing, MatchesBruteForce) {
     }
     EXPECT_NEAR(normals::average_spacing(ps.points, k), total / 400, 1e-12) << k;
   }
+}
+
+// The shared neighbour search changes nothing: PCA over a table's rows gives the normals
+// CGAL's pca_estimate_normals gives over its own tree (same points, same plane fit), and the
+// spacing from a table is CGAL's.
+TEST(EstimateNormalLines, FromANeighbourTableAsCgalsPca) {
+  const PointSet ps = sample("trefoil-ribbon", 3000, 0.0025);
+  using PointNormal = std::pair<Point3, Vector3>;
+  std::vector<PointNormal> data;
+  for (const Point3& p : ps.points) data.emplace_back(p, Vector3(0, 0, 0));
+  CGAL::pca_estimate_normals<CGAL::Sequential_tag>(
+      data, 24,
+      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<PointNormal>())
+          .normal_map(CGAL::Second_of_pair_property_map<PointNormal>()));
+  const NeighbourTable table(ps.points, 32);  // a wider table: the first 24 of each row count
+  const auto lines = normals::estimate_normal_lines(ps.points, table);
+  ASSERT_EQ(lines.size(), ps.points.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const Vector3 n = data[i].second / std::sqrt(data[i].second.squared_length());
+    if (std::abs(std::abs(n * lines[i]) - 1.0) > 1e-9) ++differ;
+  }
+  EXPECT_EQ(differ, 0u);
+  EXPECT_NEAR(normals::average_spacing(ps.points, table, 6), normals::average_spacing(ps.points, 6), 1e-12);
+  EXPECT_THROW((void)normals::estimate_normal_lines(ps.points, NeighbourTable(ps.points, 20)), InvalidOptions);
+  EXPECT_THROW((void)normals::average_spacing(ps.points, NeighbourTable(ps.points, 5), 6), InvalidOptions);
 }
 
 TEST(AverageSpacing, ScalesWithDensity) {

@@ -23,6 +23,10 @@ std::size_t flagged(const outliers::OutlierReport& r, std::size_t first, std::si
   return n;
 }
 
+std::vector<Point3> few_points_of(const std::vector<Point3>& points, std::size_t n) {
+  return {points.begin(), points.begin() + static_cast<std::ptrdiff_t>(n)};
+}
+
 TEST(FindOutliers, NoSampleOfABuiltInSurfaceIsFlagged) {
   for (const auto& name : surfaces::builtin_names()) {
     for (const std::size_t count : {1000u, 10000u}) {
@@ -85,6 +89,27 @@ TEST(FindOutliers, CloseSheetsKeepTheirPoints) {
   const double spacing = normals::average_spacing(points);
   for (const auto& p : fixtures::builtin_samples("square", 5000, 0.0, 4).points) points.emplace_back(p.x(), p.y(), spacing / 3.0);
   EXPECT_EQ(outliers::find_outliers(points).count(), 0u);
+}
+
+// A point file's stages share one neighbour search (32 for the boundary): the outliers read
+// the first 16 of each row and find what their own search finds; a table of other points
+// is refused.
+TEST(FindOutliers, FromASharedNeighbourTableAsFromItsOwnSearch) {
+  std::vector<Point3> points = fixtures::builtin_samples("square", 5000, 0.0, 3).points;
+  const double spacing = normals::average_spacing(points);
+  for (int i = 0; i < 8; ++i) points.emplace_back(-0.8 + 0.2 * i, 1.0 + 10.0 * spacing, 0.0);
+  for (int i = 0; i < 8; ++i) points.emplace_back(-0.7 + 0.2 * i, 0.0, 3.0 * spacing);
+  const auto own = outliers::find_outliers(points);
+  const auto shared = outliers::find_outliers(points, NeighbourTable(points, 32));
+  EXPECT_EQ(own.count(), 16u);
+  EXPECT_EQ(own.is_outlier, shared.is_outlier);
+  EXPECT_EQ(own.isolated, shared.isolated);
+  try {
+    (void)outliers::find_outliers(points, NeighbourTable(few_points_of(points, 100), 32));
+    FAIL() << "a table of other points accepted";
+  } catch (const InvalidOptions& e) {
+    EXPECT_EQ(std::string(e.what()), "find_outliers: a neighbour table of 100 rows of 32 for 5016 points and 16 neighbours");
+  }
 }
 
 TEST(FindOutliers, FewPointsAreNeverFlaggedAndBadOptionsAreRefused) {
