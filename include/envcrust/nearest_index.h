@@ -9,7 +9,9 @@
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <memory>
 #include <numeric>
 #include <vector>
@@ -47,6 +49,26 @@ class NearestIndex {
     for (const auto& hit : search) out.emplace_back(hit.first, std::sqrt(hit.second));
     return out;
   }
+  /// The indices of the k nearest points (all if fewer), nearest first; ties are broken by
+  /// the tree, which is deterministic for a given input.
+  [[nodiscard]] std::vector<std::size_t> nearest_indices(const Point3& q, std::size_t k) const {
+    std::vector<std::size_t> out;
+    if (points_.empty() || k == 0) return out;
+    Search search(*tree_, q, static_cast<unsigned>(std::min(k, points_.size())), 0, true, Distance(map_));
+    out.reserve(k);
+    for (const auto& hit : search) out.push_back(hit.first);
+    return out;
+  }
+  /// The indices of all points within distance r of q, in increasing order.
+  [[nodiscard]] std::vector<std::size_t> within(const Point3& q, double r) const {
+    std::vector<std::size_t> out;
+    if (points_.empty()) return out;
+    const CGAL::Fuzzy_sphere<Traits> sphere(q, r, 0.0, Traits(map_));
+    tree_->search(std::back_inserter(out), sphere);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  [[nodiscard]] std::size_t size() const { return points_.size(); }
 
  private:
   using Map = CGAL::Pointer_property_map<Point3>::const_type;

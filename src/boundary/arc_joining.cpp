@@ -30,7 +30,7 @@ std::vector<Link> candidate_links(const std::vector<Centreline>& lines, const st
   std::vector<double> local(ends);
   for (std::size_t e = 0; e < ends; ++e) {
     const Point3& p = end_point(lines, open, e);
-    local[e] = distance(p, points[index.nearest(p, 7).back()]);
+    local[e] = distance(p, points[index.nearest_indices(p, 7).back()]);
   }
   std::vector<Link> links;
   for (std::size_t e = 0; e < ends; ++e) {

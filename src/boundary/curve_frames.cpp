@@ -86,13 +86,13 @@ BoundaryCurve frame_curve(const Polyline& curve, const std::vector<Point3>& poin
     v.tangent = unit(curve[(i + 1) % m] - curve[(i + m - 1) % m]);
     // Normal line: sign-aligned average of the nearest points' lines, made perpendicular to t.
     Vector3 sum(0, 0, 0);
-    for (const std::size_t j : index.nearest(curve[i], normal_neighbors)) {
+    for (const std::size_t j : index.nearest_indices(curve[i], normal_neighbors)) {
       sum = sum + (dot(sum, normals[j]) < 0 ? -normals[j] : normals[j]);
     }
     v.normal = unit_perpendicular(sum, v.tangent);
     if (i > 0 && dot(v.normal, out.vertices[i - 1].normal) < 0) v.normal = -v.normal;
     v.conormal = cross(v.tangent, v.normal);
-    const std::size_t nearest = component[component_index.nearest(curve[i], 1).front()];
+    const std::size_t nearest = component[component_index.nearest_indices(curve[i], 1).front()];
     votes[i] = dot(v.conormal, candidates.conormals[nearest]);
     vote += votes[i];
   }

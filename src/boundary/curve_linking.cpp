@@ -108,7 +108,7 @@ std::vector<std::vector<std::size_t>> nn_crust_edges(const std::vector<Point3>& 
     // the 64 nearest: the point ends an open curve (and the search stays cheap).
     const std::size_t k_max = std::min<std::size_t>(64, n);
     for (std::size_t k = std::min<std::size_t>(16, n);; k = std::min(2 * k, k_max)) {
-      const auto near = index.nearest(points[a], k);
+      const auto near = index.nearest_indices(points[a], k);
       std::size_t nearest = n, other = n;
       for (const std::size_t b : near) {
         if (b == a || points[b] == points[a]) continue;
@@ -230,7 +230,7 @@ std::optional<Polyline> band_cycle(const std::vector<Point3>& points, const std:
   std::vector<Vector3> sums(seeds.size(), Vector3(0, 0, 0));
   std::vector<std::size_t> counts(seeds.size(), 0);
   for (const std::size_t i : component) {
-    const std::size_t sid = seed_index.nearest(points[i], 1).front();
+    const std::size_t sid = seed_index.nearest_indices(points[i], 1).front();
     sums[sid] = sums[sid] + (points[i] - CGAL::ORIGIN);
     ++counts[sid];
   }
@@ -302,7 +302,7 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
   }
   // The arc position of a band point is that of its nearest loop vertex.
   const PointIndex loop_index(loop);
-  auto position = [&](const Point3& p) { return arc[loop_index.nearest(p, 1).front()]; };
+  auto position = [&](const Point3& p) { return arc[loop_index.nearest_indices(p, 1).front()]; };
   const auto bins = static_cast<std::size_t>(std::max(3.0, std::round(total / bin_width)));
   std::vector<Vector3> sums(bins, Vector3(0, 0, 0));
   std::vector<std::size_t> counts(bins, 0);

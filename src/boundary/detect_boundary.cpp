@@ -132,7 +132,7 @@ double local_spacing(const std::vector<Point3>& points, const detail::PointIndex
   std::vector<double> d;
   d.reserve(component.size());
   for (const std::size_t i : component) {
-    const auto near = index.nearest(points[i], 7);
+    const auto near = index.nearest_indices(points[i], 7);
     d.push_back(detail::length(points[near.back()] - points[i]));
   }
   if (d.empty()) return 0.0;
@@ -391,7 +391,7 @@ BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
     if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z())) {
       throw InvalidInput("boundary point " + std::to_string(g) + " has a non-finite coordinate");
     }
-    const std::size_t i = index.nearest(q, 1).front();
+    const std::size_t i = index.nearest_indices(q, 1).front();
     const double d = detail::length(points[i] - q);
     if (d > options.link_distance * s) {
       throw InvalidInput("boundary point " + std::to_string(g) + " at (" + format_number(q.x()) + ", " +
@@ -401,7 +401,7 @@ BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
     }
     if (!matched[i]) matched[i] = 1, ++matched_count;
     Vector3 c = given.has_normals() ? detail::unit_perpendicular(given.normals[g], normals[i]) : Vector3(0, 0, 0);
-    if (c == Vector3(0, 0, 0)) c = centroid_conormal(points, normals[i], index.nearest(points[i], k), i);
+    if (c == Vector3(0, 0, 0)) c = centroid_conormal(points, normals[i], index.nearest_indices(points[i], k), i);
     if (c == Vector3(0, 0, 0)) continue;  // no direction away from the neighbours: not a boundary
     if (!candidates.flagged[i]) candidates.conormals[i] = c;
     candidates.flagged[i] = candidates.strong[i] = 1;

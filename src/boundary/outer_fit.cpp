@@ -53,7 +53,7 @@ std::vector<double> take_in_samples_beyond(const BoundaryCurve& curve, const std
       const Vector3 d = points[j] - v.position;
       const double along = dot(d, v.conormal);
       if (along <= moves[k] + allowance || std::abs(dot(d, v.normal)) > spacing) continue;
-      if (line_index.nearest(points[j], 1).front() != k) continue;
+      if (line_index.nearest_indices(points[j], 1).front() != k) continue;
       beyond[k] = std::max(beyond[k], along - allowance);
     }
   }
