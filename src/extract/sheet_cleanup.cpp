@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 
 namespace envcrust::extract {
@@ -34,6 +35,10 @@ std::size_t remove_faces(TaggedMesh& t, const std::vector<char>& remove) {
 }
 
 namespace {
+
+// fill_short_loops: a piece smaller than this times the area of a flat disc of the loop's
+// perimeter is an island, not a sheet with a hole (a hemisphere spans 2).
+constexpr double kMinPieceAreaOverSpan = 1.5;
 
 // Per face, a face id standing for its connected component (faces joined across edges).
 std::vector<std::uint32_t> component_roots(const TriangleMesh& m) {
@@ -240,9 +245,26 @@ void fill_with_fan(TaggedMesh& t, const std::vector<Index>& loop) {
 }  // namespace
 
 std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
+  const auto loops = topology::boundary_loops(t.mesh);
+  bool any = false;
+  for (const auto& loop : loops) any = any || (loop.length < max_length && loop.vertices.size() >= 3);
+  if (!any) return 0;
+  // A loop is a hole of its piece only if the piece is larger than a disc spanning the loop:
+  // the rim of a small island (a flat disc of perimeter L has area L^2 / 4 pi, the most any
+  // flat piece has) would make the piece a closed, doubled shell when filled. A cup spans
+  // twice that, a pinhole in a closed sheet far more.
+  const std::vector<std::uint32_t> root = component_roots(t.mesh);
+  std::vector<double> area(root.size(), 0.0);
+  std::vector<std::uint32_t> face_of_vertex(t.mesh.vertices.size(), 0);
+  for (std::uint32_t f = 0; f < root.size(); ++f) {
+    area[root[f]] += face_area(t.mesh, t.mesh.triangles[f]);
+    for (const Index v : t.mesh.triangles[f]) face_of_vertex[v] = f;
+  }
   std::size_t filled = 0;
-  for (const auto& loop : topology::boundary_loops(t.mesh)) {
+  for (const auto& loop : loops) {
     if (loop.length >= max_length || loop.vertices.size() < 3) continue;
+    const double spanned = loop.length * loop.length / (4.0 * std::numbers::pi);
+    if (area[root[face_of_vertex[loop.vertices.front()]]] < kMinPieceAreaOverSpan * spanned) continue;
     fill_with_fan(t, loop.vertices);
     ++filled;
   }

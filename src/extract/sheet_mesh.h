@@ -82,8 +82,9 @@ std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<
 std::size_t drop_pieces_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
                                            double max_distance);
 
-/// Fill boundary loops shorter than `max_length` with a fan around their centroid. Returns
-/// the number of loops filled.
+/// Fill boundary loops shorter than `max_length` with a fan around their centroid, but not the
+/// rim of a piece no larger than 1.5 times a flat disc of the loop's perimeter (a small
+/// island, which filling would close into a doubled shell). Returns the number filled.
 std::size_t fill_short_loops(TaggedMesh& tagged, double max_length);
 
 /// What make_manifold found and did.
