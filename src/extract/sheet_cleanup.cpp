@@ -56,6 +56,38 @@ double face_area(const TriangleMesh& m, const std::array<Index, 3>& f) {
   return std::sqrt(Kernel::Triangle_3(m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]).squared_area());
 }
 
+// filter_components: a piece under the area fraction that lies on at least this many samples
+// no kept piece comes near is an island of the input (a speck of a scan apart from the
+// rest), not a crumb of the sheet.
+constexpr std::size_t kMinIslandSamples = 20;
+
+// Mark kept (in `keep`) the `small` pieces that are islands: at least kMinIslandSamples
+// samples lie within their allowed distance of a vertex of the piece (the vertex's nearest
+// sample) and no vertex of a kept piece lies that close to the vertex.
+void keep_islands(const TriangleMesh& m, const std::vector<std::vector<Index>>& component_vertices,
+                  const NearestIndex& samples, const std::vector<double>& max_distance,
+                  const std::vector<char>& small, std::vector<char>& keep) {
+  if (std::find(small.begin(), small.end(), 1) == small.end()) return;
+  std::vector<Point3> kept_vertices;
+  for (std::size_t c = 0; c < component_vertices.size(); ++c)
+    if (keep[c])
+      for (const Index v : component_vertices[c]) kept_vertices.push_back(m.vertices[v]);
+  const NearestIndex kept(kept_vertices);
+  for (std::size_t c = 0; c < component_vertices.size(); ++c) {
+    if (!small[c]) continue;
+    std::vector<std::size_t> own;
+    for (const Index v : component_vertices[c]) {
+      const auto [j, distance] = samples.nearest(m.vertices[v]);
+      if (distance > max_distance[j]) continue;
+      if (!kept.empty() && kept.any_within(m.vertices[v], max_distance[j])) continue;
+      own.push_back(j);
+    }
+    std::sort(own.begin(), own.end());
+    own.erase(std::unique(own.begin(), own.end()), own.end());
+    if (own.size() >= kMinIslandSamples) keep[c] = 1;
+  }
+}
+
 }  // namespace
 
 std::size_t resolve_non_manifold_edges(TaggedMesh& t) {
@@ -171,6 +203,7 @@ std::size_t filter_components(TaggedMesh& t, const NearestIndex& nearest,
   double total_area = 0.0;
   std::vector<double> areas;
   std::vector<double> medians;
+  std::vector<std::vector<Index>> component_vertices;
   for (const auto& [root, faces] : components) {
     double area = 0.0;
     std::vector<Index> vertices;
@@ -190,13 +223,19 @@ std::size_t filter_components(TaggedMesh& t, const NearestIndex& nearest,
     medians.push_back(d[d.size() / 2]);
     areas.push_back(area);
     total_area += area;
+    component_vertices.push_back(std::move(vertices));
   }
+  std::vector<char> keep(components.size(), 0), small(components.size(), 0);
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    if (!(medians[c] < 1.0)) continue;
+    (areas[c] >= min_area_fraction * total_area ? keep : small)[c] = 1;
+  }
+  keep_islands(t.mesh, component_vertices, nearest, max_distance, small, keep);
   std::vector<char> remove(face_root.size(), 0);
   std::size_t dropped = 0;
   std::size_t index = 0;
   for (const auto& [root, faces] : components) {
-    const bool keep = medians[index] < 1.0 && areas[index] >= min_area_fraction * total_area;
-    if (!keep) {
+    if (!keep[index]) {
       ++dropped;
       for (auto f : faces) remove[f] = 1;
     }

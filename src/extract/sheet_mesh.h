@@ -45,8 +45,10 @@ std::size_t split_pinched_vertices(TaggedMesh& tagged);
 
 /// Keep the components whose median over vertices of d(v, s) / max_distance[s], s the nearest
 /// surface sample in `samples` (one max_distance per sample: local rho and spacing set it), is
-/// below 1 and whose area is at least `min_area_fraction` of the total. Returns the number
-/// dropped.
+/// below 1 and whose area is at least `min_area_fraction` of the total, or which are islands:
+/// a smaller piece whose vertices lie on at least 20 samples (their nearest, within
+/// max_distance) that no vertex of a larger kept piece comes within max_distance of (a
+/// speck of a scan apart from the rest, not a crumb of the sheet). Returns the number dropped.
 std::size_t filter_components(TaggedMesh& tagged, const NearestIndex& samples,
                               const std::vector<double>& max_distance, double min_area_fraction);
 
