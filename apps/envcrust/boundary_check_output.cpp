@@ -3,6 +3,7 @@
 
 #include "envcrust/mesh.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace envcrust::cli {
@@ -12,6 +13,9 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
                                                  const topology::MeshTopology& topology,
                                                  const std::string& tolerance_text) {
   std::vector<std::string> out;
+  auto is_left_out = [&](std::size_t c) {
+    return std::find(check.left_out_curves.begin(), check.left_out_curves.end(), c) != check.left_out_curves.end();
+  };
   for (const std::size_t c : check.missing_curves) {
     const auto& m = check.matches[c];
     std::ostringstream w;
@@ -22,14 +26,19 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
       w << " (the nearest, loop " << *m.mesh_loop << ", is " << check.follow_distances[c] << " away there, "
         << m.hausdorff << " at most)";
     else w << " (the result has no border)";
-    w << ": the result closed it, tore it or moved it";
+    if (is_left_out(c)) w << ": the result left out the part of the surface it bounds (none of it lies within "
+                          << tolerance_text << " of the curve)";
+    else w << ": the result closed it, tore it or moved it";
     out.push_back(w.str());
   }
   for (const std::size_t c : check.unresolved_curves) {
     std::ostringstream w;
     w.precision(4);
-    w << "input boundary curve " << c << " (length " << mesh::closed_length(curves[c]) << ") is closed in the result: "
-      << "shorter than " << check.min_resolvable_length << ", it is below the resolution of the reconstruction "
+    w << "input boundary curve " << c << " (length " << mesh::closed_length(curves[c]) << ") is "
+      << (is_left_out(c) ? "left out of the result with the part of the surface it bounds (no part of the result lies "
+                           "within " + tolerance_text + " of it)"
+                         : std::string("closed in the result"))
+      << ": shorter than " << check.min_resolvable_length << ", it is below the resolution of the reconstruction "
       << "(the envelope bridges every hole shorter than 2 pi rho)";
     out.push_back(w.str());
   }
@@ -47,7 +56,8 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
 nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const std::vector<Polyline>& curves,
                                    const topology::MeshTopology& topology) {
   nlohmann::json missing = nlohmann::json::array(), unresolved = nlohmann::json::array(),
-                 extra = nlohmann::json::array(), matches = nlohmann::json::array();
+                 left_out = nlohmann::json::array(), extra = nlohmann::json::array(),
+                 matches = nlohmann::json::array();
   for (const auto& m : check.matches)
     matches.push_back({{"curve", m.reference_loop},
                        {"curve_length", mesh::closed_length(curves[m.reference_loop])},
@@ -57,11 +67,13 @@ nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const s
                                                        : nlohmann::json(nullptr)}});
   for (const std::size_t c : check.missing_curves) missing.push_back(c);
   for (const std::size_t c : check.unresolved_curves) unresolved.push_back(c);
+  for (const std::size_t c : check.left_out_curves) left_out.push_back(c);
   for (const std::size_t l : check.extra_loops) extra.push_back(l);
   return {{"tolerance", check.tolerance},        {"follow_fraction", check.follow_fraction},
           {"curves", curves.size()},
           {"loops", topology.boundary_loops.size()}, {"matches", matches},
           {"missing_curves", missing},           {"unresolved_curves", unresolved},
+          {"left_out_curves", left_out},
           {"min_resolvable_length", check.min_resolvable_length}, {"extra_loops", extra},
           {"is_consistent", check.is_consistent()}};
 }

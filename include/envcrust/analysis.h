@@ -94,6 +94,9 @@ struct BoundaryCheck {
   std::vector<double> follow_distances;     ///< per curve: partial Hausdorff to its nearest loop (inf: none)
   std::vector<std::size_t> missing_curves;  ///< curves whose nearest loop does not follow them
   std::vector<std::size_t> unresolved_curves;  ///< such curves shorter than min_resolvable_length
+  /// Missing or unresolved curves with no vertex of the result within the tolerance: the
+  /// result left the place out (a piece dropped) rather than closed the curve.
+  std::vector<std::size_t> left_out_curves;
   std::vector<std::size_t> extra_loops;     ///< loops that follow no curve
   [[nodiscard]] bool is_consistent() const { return missing_curves.empty() && extra_loops.empty(); }
 };

@@ -2,12 +2,14 @@
 #include "envcrust/analysis.h"
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
+#include "envcrust/nearest_index.h"
 
 #include <CGAL/bounding_box.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -174,6 +176,14 @@ BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::
   check.min_resolvable_length = min_resolvable_length;
   check.matches = match_boundaries(topology, curves);
   std::vector<char> explained(topology.boundary_loops.size(), 0);
+  // Searched only when a curve is not followed: the result's vertices near it, if any.
+  std::unique_ptr<NearestIndex> result_points;
+  auto is_left_out = [&](const Polyline& curve) {
+    if (!result_points) result_points = std::make_unique<NearestIndex>(topology.points);
+    if (result_points->empty()) return true;
+    return std::none_of(curve.begin(), curve.end(),
+                        [&](const Point3& p) { return result_points->any_within(p, tolerance); });
+  };
   for (const auto& m : check.matches) {
     double follow = std::numeric_limits<double>::infinity();
     if (m.mesh_loop) {
@@ -181,9 +191,13 @@ BoundaryCheck check_boundary(const topology::MeshTopology& topology, const std::
           curves[m.reference_loop], topology.boundary_loops[*m.mesh_loop].polyline(topology.points), follow_fraction);
     }
     check.follow_distances.push_back(follow);
-    if (follow <= tolerance) explained[*m.mesh_loop] = 1;
-    else if (mesh::closed_length(curves[m.reference_loop]) < min_resolvable_length) check.unresolved_curves.push_back(m.reference_loop);
+    if (follow <= tolerance) {
+      explained[*m.mesh_loop] = 1;
+      continue;
+    }
+    if (mesh::closed_length(curves[m.reference_loop]) < min_resolvable_length) check.unresolved_curves.push_back(m.reference_loop);
     else check.missing_curves.push_back(m.reference_loop);
+    if (is_left_out(curves[m.reference_loop])) check.left_out_curves.push_back(m.reference_loop);
   }
   for (std::size_t l = 0; l < explained.size(); ++l)
     if (!explained[l]) check.extra_loops.push_back(l);

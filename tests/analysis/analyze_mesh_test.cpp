@@ -131,6 +131,18 @@ TEST(BoundaryCheck, names_the_curves_without_a_loop_and_the_loops_without_a_curv
                                                    circles, 0.1, 0.9, 6.0);
   EXPECT_EQ(resolvable.missing_curves, (std::vector<std::size_t>{0, 1}));
   EXPECT_TRUE(resolvable.unresolved_curves.empty());
+  // A curve with no vertex of the result near it was left out, not closed (the capped
+  // cylinder closes its rims; a copy of one 10 away has nothing of the result near it).
+  EXPECT_TRUE(unresolved.left_out_curves.empty());
+  Polyline far = circles[0];
+  for (Point3& p : far) p = p + Vector3(10, 0, 0);
+  const auto away = analysis::check_boundary(analysis::analyze_mesh(fixtures::capped_cylinder()).topology,
+                                             {circles[0], far}, 0.1, 0.9, 7.0);
+  EXPECT_EQ(away.unresolved_curves, (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(away.left_out_curves, (std::vector<std::size_t>{1}));
+  EXPECT_EQ(analysis::check_boundary(analysis::analyze_mesh(fixtures::capped_cylinder()).topology, {far}, 0.1)
+                .left_out_curves,
+            (std::vector<std::size_t>{0}));  // missing too when long enough to resolve
   // A curve that is followed is neither, however short.
   EXPECT_TRUE(analysis::check_boundary(open, circles, 2 * sagitta, 0.9, 7.0).unresolved_curves.empty());
 

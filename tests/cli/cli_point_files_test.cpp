@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iterator>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -374,6 +375,52 @@ TEST_F(CliTest, reconstruct_names_a_boundary_curve_below_its_resolution) {
   EXPECT_EQ(d["boundary_check"]["unresolved_curves"].size(), 1u);
   EXPECT_EQ(d["boundary_check"]["is_consistent"], true);
   EXPECT_TRUE(d["hints"].empty()) << d["hints"];
+}
+
+// A speck of 13 samples 0.2 above the plane of a square of 10,000, with its rim given: the
+// result has no piece there (under the 20 samples a piece must lie on), and the report says
+// the curve was left out, not closed.
+TEST_F(CliTest, reconstruct_says_a_boundary_curve_whose_piece_is_missing_was_left_out) {
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  envcrust::PointSet points;
+  for (int i = 0; i < 10000; ++i) points.points.emplace_back(2 * u(rng) - 1, 2 * u(rng) - 1, 0.0);
+  for (int i = -2; i <= 2; ++i)  // a grid 0.02 apart, as dense as the square: 13 samples
+    for (int k = -2; k <= 2; ++k)
+      if (i * i + k * k <= 4) points.points.emplace_back(1.5 + 0.02 * i, 0.02 * k, 0.2);
+  envcrust::io::write_points(path("p.xyz"), points);
+  {
+    std::ofstream out(path("rims.xyz"));
+    out.precision(17);
+    for (int k = 0; k < 12; ++k) {
+      const double a = 2 * 3.141592653589793 * k / 12;
+      out << 1.5 + 0.035 * std::cos(a) << " " << 0.035 * std::sin(a) << " 0.2\n";
+    }
+    for (int i = 0; i < 40; ++i) {
+      const double t = -1 + 2.0 * i / 40;
+      out << t << " -1 0\n1 " << t << " 0\n" << -t << " 1 0\n-1 " << -t << " 0\n";
+    }
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("p.xyz") + " --boundary " + path("rims.xyz") + " -o " +
+                                   path("m.ply") + " --json --quiet");
+  EXPECT_EQ(j["input_boundary_curves"], 2);
+  EXPECT_EQ(j["analysis"]["components"], 1);
+  const auto& check = j["boundary_check"];
+  ASSERT_EQ(check["left_out_curves"].size(), 1u);
+  ASSERT_EQ(check["unresolved_curves"].size(), 1u);
+  EXPECT_EQ(check["left_out_curves"][0], check["unresolved_curves"][0]);
+  const auto curve = check["left_out_curves"][0].get<int>();
+  bool named = false;
+  for (const auto& w : j["warnings"]) {
+    const std::string text = w.get<std::string>();
+    if (text.rfind("input boundary curve " + std::to_string(curve) + " ", 0) != 0) continue;
+    named = true;
+    EXPECT_NE(text.find(") is left out of the result with the part of the surface it bounds (no part of the result "
+                        "lies within "),
+              std::string::npos) << text;
+    EXPECT_EQ(text.find("closed in the result"), std::string::npos) << text;
+  }
+  EXPECT_TRUE(named) << j["warnings"];
 }
 
 TEST_F(CliTest, reconstruct_too_few_points_names_the_file) {
