@@ -308,24 +308,16 @@ std::vector<Vector3> checked_normals(const std::vector<Point3>& points, const st
 
 }  // namespace
 
-BoundaryDetection detect_boundary(const std::vector<Point3>& points,
-                                  const std::vector<Vector3>& normal_lines,
-                                  const BoundaryOptions& options) {
-  checked_normals(points, normal_lines, options);
-  return detect_boundary(points, normal_lines,
-                         NeighbourTable(points, static_cast<unsigned>(std::max(options.neighbors, kSpacingNeighbours))),
-                         options);
+namespace {
+
+// The neighbours the detection reads per point: the angle gaps' and the spacing's.
+unsigned needed_neighbours(const BoundaryOptions& options) {
+  return static_cast<unsigned>(std::max(options.neighbors, kSpacingNeighbours));
 }
 
-BoundaryDetection detect_boundary(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
-                                  const NeighbourTable& table, const BoundaryOptions& options) {
-  const std::vector<Vector3> normals = checked_normals(points, normal_lines, options);
-  const auto needed = static_cast<unsigned>(std::max(options.neighbors, kSpacingNeighbours));
-  if (table.size() != points.size() || table.k() < needed) {
-    throw InvalidOptions("boundary detection: a neighbour table of " + std::to_string(table.size()) + " rows of " +
-                         std::to_string(table.k()) + " for " + std::to_string(points.size()) + " points and " +
-                         std::to_string(needed) + " neighbours");
-  }
+// detect_boundary with its input checked (unit normals) and a table that fits.
+BoundaryDetection detect_checked(const std::vector<Point3>& points, const std::vector<Vector3>& normals,
+                                 const NeighbourTable& table, const BoundaryOptions& options) {
   BoundaryDetection out;
   out.spacing = normals::average_spacing(points, table, kSpacingNeighbours);
   const double s = out.spacing;
@@ -364,6 +356,26 @@ BoundaryDetection detect_boundary(const std::vector<Point3>& points, const std::
                           .max_join_rel_arc = kMaxArcJoinRelArc});
   build_curves(points, normals, index, candidates, options, components, lines, true, out);
   return out;
+}
+
+}  // namespace
+
+BoundaryDetection detect_boundary(const std::vector<Point3>& points,
+                                  const std::vector<Vector3>& normal_lines,
+                                  const BoundaryOptions& options) {
+  const std::vector<Vector3> normals = checked_normals(points, normal_lines, options);
+  return detect_checked(points, normals, NeighbourTable(points, needed_neighbours(options)), options);
+}
+
+BoundaryDetection detect_boundary(const std::vector<Point3>& points, const std::vector<Vector3>& normal_lines,
+                                  const NeighbourTable& table, const BoundaryOptions& options) {
+  const std::vector<Vector3> normals = checked_normals(points, normal_lines, options);
+  if (table.size() != points.size() || table.k() < needed_neighbours(options)) {
+    throw InvalidOptions("boundary detection: a neighbour table of " + std::to_string(table.size()) + " rows of " +
+                         std::to_string(table.k()) + " for " + std::to_string(points.size()) + " points and " +
+                         std::to_string(needed_neighbours(options)) + " neighbours");
+  }
+  return detect_checked(points, normals, table, options);
 }
 
 BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
