@@ -64,9 +64,16 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   sub.add_option("input", cmd.input, "builtin:NAME, a NURBS file (.igs/.iges IGES entities 128/144, .json NURBS-Python; several patches are joined into one model), a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
   sub.add_option("--rho", cmd.rho,
-                 "Envelope radius: 'auto' (half the estimated reach, raised to bridge the gaps of "
-                 "--rho-gap-quantile of the samples) or a value")
+                 "Envelope radius: 'auto' (half the estimated reach, the reach taken as at most 10% of the "
+                 "diagonal and --rho-width-cap times the surface's half-width, then raised to bridge the gaps "
+                 "of --rho-gap-quantile of the samples) or a value")
       ->capture_default_str();
+  sub.add_option("--rho-width-cap", cmd.options.envelope.max_reach_rel_half_width,
+                 "Automatic rho: the reach is taken as at most this many times the surface's half-width (the "
+                 "largest distance from a sample to its boundary curves), so a narrow strip gets envelope "
+                 "samples across it")
+      ->capture_default_str()
+      ->check(number_above(0));
   sub.add_option("--rho-gap-quantile", cmd.options.envelope.gap_quantile,
                  "Automatic rho is at least this quantile of the samples' 8th-neighbour distances / 2.5 "
                  "(0: half the reach only)")
@@ -139,7 +146,11 @@ nlohmann::json envelope_json(const envelope::EnvelopeSamples& e) {
   if (e.reach.pairs_examined > 0) {
     j["reach"] = {{"reach", e.reach.reach}, {"curvature_radius", e.reach.curvature_radius},
                   {"bottleneck", e.reach.bottleneck}};
-    j["rho_from"] = e.is_rho_gap_bound ? "gaps" : e.is_rho_noise_bound ? "noise" : "reach";
+    j["rho_from"] = e.is_rho_gap_bound     ? "gaps"
+                    : e.is_rho_noise_bound ? "noise"
+                    : e.is_rho_width_bound ? "width"
+                                           : "reach";
+    if (std::isfinite(e.half_width)) j["half_width"] = e.half_width;
     j["input_too_sparse"] = e.is_input_too_sparse;
   }
   return j;
@@ -432,6 +443,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << (result.envelope.reach.pairs_examined == 0 ? ""
                   : result.envelope.is_rho_gap_bound       ? " (from the input's gaps)"
                   : result.envelope.is_rho_noise_bound     ? " (from the noise)"
+                  : result.envelope.is_rho_width_bound     ? " (from the surface's half-width)"
                                                            : " (from the reach)")
               << (result.envelope.local_rho.empty() ? "" : ", at least " + std::to_string(result.envelope.rho_min))
               << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size()

@@ -96,9 +96,12 @@ std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, st
 
 /// Order a component along the diameter path of its linking-graph MST, then replace the path
 /// by averages of all component points binned by their arc-length position (curve_linking.cpp).
+/// With `conormals` (per point of `points`), only links whose conormals make a dot product
+/// above `min_conormal_dot` enter the tree, as link_candidates joined the component.
 Centreline order_component(const std::vector<Point3>& points,
                            const std::vector<std::size_t>& component, double link_radius,
-                           double bin_width);
+                           double bin_width, const std::vector<Vector3>* conormals = nullptr,
+                           double min_conormal_dot = -1.0);
 
 /// The NN-crust of points along curves (Dey & Kumar): each point is joined to its nearest
 /// neighbour and to the nearest point on the other side of it (b with (b - a).(nearest - a)

@@ -322,7 +322,7 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
 
 Centreline order_component(const std::vector<Point3>& points,
                            const std::vector<std::size_t>& component, double link_radius,
-                           double bin_width) {
+                           double bin_width, const std::vector<Vector3>* conormals, double min_conormal_dot) {
   Polyline local;
   local.reserve(component.size());
   for (const std::size_t i : component) local.push_back(points[i]);
@@ -334,12 +334,17 @@ Centreline order_component(const std::vector<Point3>& points,
                                                              local.back(), local.front()));
     return out;
   }
-  // Minimum spanning tree (Kruskal, ties by index) of the distance graph within link_radius.
+  // Minimum spanning tree (Kruskal, ties by index) of the distance graph within link_radius,
+  // of the links whose conormals agree when they are given: across a strip narrower than
+  // link_radius its two rims face each other, and a tree through such links takes a short
+  // cut across the strip instead of going round its end.
   const PointIndex index(local);
   std::vector<std::tuple<double, std::size_t, std::size_t>> edges;
   for (std::size_t a = 0; a < local.size(); ++a) {
     for (const std::size_t b : index.within(local[a], link_radius)) {
-      if (b > a) edges.emplace_back(std::sqrt(CGAL::squared_distance(local[a], local[b])), a, b);
+      if (b <= a) continue;
+      if (conormals && dot((*conormals)[component[a]], (*conormals)[component[b]]) <= min_conormal_dot) continue;
+      edges.emplace_back(std::sqrt(CGAL::squared_distance(local[a], local[b])), a, b);
     }
   }
   std::sort(edges.begin(), edges.end());

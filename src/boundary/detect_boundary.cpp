@@ -338,7 +338,8 @@ BoundaryDetection detect_checked(const std::vector<Point3>& points, const std::v
   // stay apart (a small or ragged loop whose tree branches), along the NN-crust cycle of its
   // thinned centre line instead, if it has one.
   for (const auto& component : components) {
-    detail::Centreline line = detail::order_component(points, component, link_radius, s);
+    detail::Centreline line = detail::order_component(points, component, link_radius, s, &candidates.conormals,
+                                                      options.link_min_conormal_dot);
     if (line.end_gap > options.close_distance * s) {
       if (const auto cycle = detail::band_cycle(points, component, kBandSeedSpacing * s)) {
         Polyline band;

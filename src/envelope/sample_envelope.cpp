@@ -9,7 +9,9 @@
 #include "neighbour_median.h"
 #include "poisson_disk.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,6 +48,7 @@ void validate(const SurfaceSamples& s, const EnvelopeOptions& o) {
   if (o.rho) check(*o.rho > 0 && std::isfinite(*o.rho), "rho", *o.rho);
   check(o.rho_rel_reach > 0 && o.rho_rel_reach < 1, "rho_rel_reach", o.rho_rel_reach);
   check(o.max_reach_rel_diag > 0, "max_reach_rel_diag", o.max_reach_rel_diag);
+  check(o.max_reach_rel_half_width > 0, "max_reach_rel_half_width", o.max_reach_rel_half_width);
   check(o.spacing_rel_rho > 0 && o.spacing_rel_rho <= 4, "spacing_rel_rho", o.spacing_rel_rho);
   check(o.sheet_clearance > 0 && o.sheet_clearance <= 1, "sheet_clearance", o.sheet_clearance);
   check(o.rim_clearance > 0 && o.rim_clearance <= 1, "rim_clearance", o.rim_clearance);
@@ -85,6 +88,28 @@ std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptio
   return adaptive_rho(surface.points, lfs, a, floor);
 }
 
+// The largest distance from a sample to the nearest boundary-curve vertex (infinite without
+// curves), over at most kMaxWidthQueries samples evenly strided: a strip of width w reads
+// about w / 2, a disc its radius.
+double surface_half_width(const SurfaceSamples& surface) {
+  constexpr std::size_t kMaxWidthQueries = 100000;
+  std::vector<Point3> curve_points;
+  for (const auto& c : surface.boundary)
+    for (const auto& b : c.vertices) curve_points.push_back(b.position);
+  if (curve_points.empty()) return std::numeric_limits<double>::infinity();
+  const NearestIndex index(curve_points);
+  const std::size_t n = surface.points.size();
+  const std::size_t stride = std::max<std::size_t>(1, n / kMaxWidthQueries);
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, (n + stride - 1) / stride, 1024), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double widest) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+          widest = std::max(widest, index.nearest(surface.points[i * stride]).second);
+        return widest;
+      },
+      [](double a, double b) { return std::max(a, b); });
+}
+
 }  // namespace
 
 std::vector<Point3> EnvelopeSamples::points() const {
@@ -112,8 +137,11 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     out.reach = estimate_reach(surface, ReachOptions{.quantile = options.reach_quantile,
                      .min_pair_distance = options.reach_min_pair_rel_spacing * average_spacing,
                      .seed = options.seed});
-    const double capped = std::min(out.reach.reach, options.max_reach_rel_diag * diag);
+    out.half_width = surface_half_width(surface);
+    const double resolvable = std::min(options.max_reach_rel_diag * diag, options.max_reach_rel_half_width * out.half_width);
+    const double capped = std::min(out.reach.reach, resolvable);
     out.rho = options.rho_rel_reach * capped;
+    out.is_rho_width_bound = options.max_reach_rel_half_width * out.half_width < std::min(out.reach.reach, options.max_reach_rel_diag * diag);
     if (options.min_rho_rel_noise * out.noise > out.rho) {
       out.rho = options.min_rho_rel_noise * out.noise;
       out.is_rho_noise_bound = true;
@@ -145,19 +173,29 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     // size: the envelope of 40 points on a square is a pillow whose medial sheet closes. A
     // sparse input also reads as noisy (its plane fits span curved patches), so the count of
     // samples that would do is given whenever the gaps alone need too large a rho.
-    const double resolvable = options.max_reach_rel_diag * diag;
     if (out.rho > resolvable && (out.is_rho_gap_bound || out.is_rho_noise_bound)) {
       out.is_input_too_sparse = true;
       const bool is_sparse = bridging > resolvable;
       const double denser = static_cast<double>(surface.points.size()) * (bridging / resolvable) * (bridging / resolvable);
-      out.warnings.push_back("the input is too " + std::string(!is_sparse ? "noisy" : out.is_rho_gap_bound ? "sparse" : "sparse (or noisy)") +
-                             " for its size: rho " + format(out.rho) + " is " + format(100.0 * out.rho / diag) +
-                             "% of its diagonal (the envelope resolves shapes down to about 2 rho; at most " +
-                             format(100.0 * options.max_reach_rel_diag) + "% is trusted): the result may be "
-                             "rounded, closed or empty" +
-                             (is_sparse ? "; about " + format(std::ceil(denser)) + " samples, evenly spread, would "
-                                          "bridge the gaps with rho at " + format(100.0 * options.max_reach_rel_diag) + "%"
-                                        : std::string()));
+      const std::string what = std::string(!is_sparse ? "noisy" : out.is_rho_gap_bound ? "sparse" : "sparse (or noisy)");
+      if (resolvable < options.max_reach_rel_diag * diag)  // the surface's width is the tighter bound
+        out.warnings.push_back("the input is too " + what + " for its width: rho " + format(out.rho) + " is more than " +
+                               format(options.max_reach_rel_half_width) + " times the surface's half-width " +
+                               format(out.half_width) + " (the largest distance from a sample to its boundary "
+                               "curves; the envelope resolves shapes down to about 2 rho): the result may be torn, "
+                               "rounded or empty" +
+                               (is_sparse ? "; about " + format(std::ceil(denser)) + " samples, evenly spread, would "
+                                            "bridge the gaps with rho at that bound"
+                                          : std::string()));
+      else
+        out.warnings.push_back("the input is too " + what + " for its size: rho " + format(out.rho) + " is " +
+                               format(100.0 * out.rho / diag) +
+                               "% of its diagonal (the envelope resolves shapes down to about 2 rho; at most " +
+                               format(100.0 * options.max_reach_rel_diag) + "% is trusted): the result may be "
+                               "rounded, closed or empty" +
+                               (is_sparse ? "; about " + format(std::ceil(denser)) + " samples, evenly spread, would "
+                                            "bridge the gaps with rho at " + format(100.0 * options.max_reach_rel_diag) + "%"
+                                          : std::string()));
     }
   }
   out.spacing = options.spacing_rel_rho * out.rho;

@@ -276,6 +276,30 @@ TEST_F(CliTest, reconstruct_hints_at_an_unsampled_stripe_read_as_a_hole) {
   EXPECT_TRUE(f["hints"].empty()) << f["hints"].dump();
 }
 
+// A strip 100 times longer than wide, as a scan of a belt would give it (no normals): its
+// detected rims bound the automatic rho to the strip's half-width, where half of 10% of the
+// diagonal (1.0, five times the width) tore it into pieces.
+TEST_F(CliTest, reconstruct_a_narrow_strip_with_rho_from_its_width) {
+  {
+    std::ofstream out(path("strip.xyz"));
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> along(0.0, 20.0), across(0.0, 0.2);
+    out << std::setprecision(17);
+    for (int i = 0; i < 8000; ++i) out << along(rng) << ' ' << across(rng) << " 0\n";
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("strip.xyz") + " -o " + path("strip.ply") + " --json");
+  EXPECT_EQ(j["envelope"]["rho_from"], "width");
+  const double half_width = j["envelope"]["half_width"].get<double>();
+  EXPECT_GT(half_width, 0.08);  // the detected rims lie at the outermost samples, inside the edges
+  EXPECT_LE(half_width, 0.1);
+  EXPECT_DOUBLE_EQ(j["envelope"]["rho"].get<double>(), half_width);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["components"], 1);
+  EXPECT_EQ(a["euler_characteristic"], 1);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+}
+
 // Issue #5: the boundary of a point cloud can be given instead of detected.
 TEST_F(CliTest, reconstruct_with_given_boundary_points) {
   ASSERT_EQ(run_envcrust("sample cylinder -n 10000 --seed 3 -q -o " + path("c.xyz") + " --boundary-out " +
