@@ -86,7 +86,7 @@ analysis::Reference load_reference(const std::string& spec, const models::JoinOp
   // Distances are reported against the reference's size: it needs one.
   const auto& points = reference.mesh ? reference.mesh->vertices : reference.points;
   if (!(mesh::bbox_diagonal(points) > 0))
-    throw InvalidInput(spec + ": the reference is a single point (its bounding box has no size to measure against)");
+    throw InvalidInput(spec + ": all its points coincide (a bounding box of no size: nothing to measure against or to frame)");
   return reference;
 }
 

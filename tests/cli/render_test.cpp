@@ -124,6 +124,24 @@ TEST_F(CliTest, render_bad_input_is_named_and_no_png_is_written) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);  // bad.off, no temp file
 }
 
+// Points that all coincide frame nothing; as a reference they measure nothing (analyze).
+TEST_F(CliTest, points_that_all_coincide_are_refused_by_render_and_as_a_reference) {
+  {
+    std::ofstream points(path("same.xyz"));
+    for (int i = 0; i < 10; ++i) points << "1 2 3\n";
+  }
+  const std::string message = "envcrust: error: " + path("same.xyz") +
+                              ": all its points coincide (a bounding box of no size: nothing to measure against or "
+                              "to frame)\n";
+  const auto r = run_envcrust("render " + path("same.xyz") + " -o " + path("s.png"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, message);
+  EXPECT_FALSE(fs::exists(path("s.png")));
+  const auto a = run_envcrust("analyze builtin:square --reference " + path("same.xyz"));
+  EXPECT_EQ(a.exit_code, 1);
+  EXPECT_EQ(a.err, message);
+}
+
 TEST_F(CliTest, render_an_empty_panel_is_refused_naming_the_input) {
   {
     std::ofstream points(path("p.xyz"));
