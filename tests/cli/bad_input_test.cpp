@@ -212,6 +212,8 @@ TEST_F(CliTest, flags_out_of_range_name_the_flag_and_json_survives_any_file_name
       {"reconstruct builtin:cylinder --spacing 0 -o " + path("c.ply"), "--spacing: must be a number in (0, 4] (got '0')"},
       {"reconstruct builtin:cylinder --rho-gap-quantile nan -o " + path("c.ply"),
        "--rho-gap-quantile: must be a number in [0, 1] (got 'nan')"},
+      {"reconstruct builtin:cylinder --rho-width-cap 0 -o " + path("c.ply"),
+       "--rho-width-cap: must be a number > 0 (got '0')"},
       {"reconstruct builtin:cylinder --remesh --remesh-iterations 0 -o " + path("c.ply"),
        "--remesh-iterations: must be a whole number in 1..100 (got '0')"},
       {"powercrust builtin:sphere --box-scale 1e12 -o " + path("c.ply"),
