@@ -137,11 +137,14 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
     out.reach = estimate_reach(surface, ReachOptions{.quantile = options.reach_quantile,
                      .min_pair_distance = options.reach_min_pair_rel_spacing * average_spacing,
                      .seed = options.seed});
+    // The envelope must resolve the shape: the reach is capped by the size and by the width.
     out.half_width = surface_half_width(surface);
-    const double resolvable = std::min(options.max_reach_rel_diag * diag, options.max_reach_rel_half_width * out.half_width);
+    const double size_cap = options.max_reach_rel_diag * diag;
+    const double width_cap = options.max_reach_rel_half_width * out.half_width;
+    const double resolvable = std::min(size_cap, width_cap);
     const double capped = std::min(out.reach.reach, resolvable);
     out.rho = options.rho_rel_reach * capped;
-    out.is_rho_width_bound = options.max_reach_rel_half_width * out.half_width < std::min(out.reach.reach, options.max_reach_rel_diag * diag);
+    out.is_rho_width_bound = width_cap < std::min(out.reach.reach, size_cap);
     if (options.min_rho_rel_noise * out.noise > out.rho) {
       out.rho = options.min_rho_rel_noise * out.noise;
       out.is_rho_noise_bound = true;
@@ -178,7 +181,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
       const bool is_sparse = bridging > resolvable;
       const double denser = static_cast<double>(surface.points.size()) * (bridging / resolvable) * (bridging / resolvable);
       const std::string what = std::string(!is_sparse ? "noisy" : out.is_rho_gap_bound ? "sparse" : "sparse (or noisy)");
-      if (resolvable < options.max_reach_rel_diag * diag)  // the surface's width is the tighter bound
+      if (width_cap < size_cap)
         out.warnings.push_back("the input is too " + what + " for its width: rho " + format(out.rho) + " is more than " +
                                format(options.max_reach_rel_half_width) + " times the surface's half-width " +
                                format(out.half_width) + " (the largest distance from a sample to its boundary "

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace envcrust {
 namespace {
@@ -73,6 +74,21 @@ TEST(NarrowStrip, ComesOutAsOneDiscOnTheStrip) {
   double farthest = 0.0;
   for (const auto& p : result.mesh.vertices) farthest = std::max(farthest, distance_to_strip(p));
   EXPECT_LT(farthest, 0.005 * diagonal);
+}
+
+// Samples too sparse to bridge their gaps at a rho the strip's width allows: the warning
+// names the width, not the diagonal, as the bound that was passed.
+TEST(NarrowStrip, TooSparseForItsWidthIsReported) {
+  const auto samples = strip_samples(150);
+  const auto e = envelope::sample_envelope(samples);
+  EXPECT_TRUE(e.is_rho_gap_bound);
+  EXPECT_TRUE(e.is_input_too_sparse);
+  EXPECT_GT(e.rho, 2.0 * e.half_width);
+  const auto it = std::find_if(e.warnings.begin(), e.warnings.end(),
+                               [](const std::string& w) { return w.rfind("the input is too sparse for its width", 0) == 0; });
+  ASSERT_NE(it, e.warnings.end());
+  EXPECT_NE(it->find(" is more than 2 times the surface's half-width "), std::string::npos) << *it;
+  EXPECT_NE(it->find("samples, evenly spread, would bridge the gaps with rho at that bound"), std::string::npos) << *it;
 }
 
 // An unsampled-boundary strip: no curves, so no width and no cap (a closed surface's rho
