@@ -90,24 +90,20 @@ std::vector<double> local_rho(const SurfaceSamples& surface, const EnvelopeOptio
 
 // The largest distance from a sample to the nearest boundary-curve vertex (infinite without
 // curves), over at most kMaxWidthQueries samples evenly strided: a strip of width w reads
-// about w / 2, a disc its radius.
-double surface_half_width(const SurfaceSamples& surface) {
+// about w / 2, a disc its radius. `curve_tree` holds the curves' vertices.
+double surface_half_width(const std::vector<Point3>& points, const PointTree& curve_tree) {
   constexpr std::size_t kMaxWidthQueries = 100000;
-  std::vector<Point3> curve_points;
-  for (const auto& c : surface.boundary)
-    for (const auto& b : c.vertices) curve_points.push_back(b.position);
-  if (curve_points.empty()) return std::numeric_limits<double>::infinity();
-  const NearestIndex index(curve_points);
-  const std::size_t n = surface.points.size();
-  const std::size_t stride = std::max<std::size_t>(1, n / kMaxWidthQueries);
-  return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, (n + stride - 1) / stride, 1024), 0.0,
+  if (curve_tree.size() == 0) return std::numeric_limits<double>::infinity();
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / kMaxWidthQueries);
+  const double widest2 = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, (points.size() + stride - 1) / stride, 1024), 0.0,
       [&](const tbb::blocked_range<std::size_t>& r, double widest) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
-          widest = std::max(widest, index.nearest(surface.points[i * stride]).second);
+          widest = std::max(widest, PointSearch(curve_tree, points[i * stride], 1).begin()->second);
         return widest;
       },
       [](double a, double b) { return std::max(a, b); });
+  return std::sqrt(widest2);
 }
 
 }  // namespace
@@ -131,6 +127,12 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   auto distances = neighbour_distances(surface.points, input_tree);
   out.input_neighbour_distance = std::move(distances.rk);
   out.input_nearest_distance = std::move(distances.nearest);
+  // One kd-tree of the boundary curves' vertices for the half-width and the clearance test.
+  std::vector<Point3> curve_points;
+  for (const auto& c : surface.boundary)
+    for (const auto& b : c.vertices) curve_points.push_back(b.position);
+  PointTree curve_tree(curve_points.begin(), curve_points.end());
+  curve_tree.build();
   if (options.rho) {
     out.rho = *options.rho;
   } else {
@@ -138,7 +140,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
                      .min_pair_distance = options.reach_min_pair_rel_spacing * average_spacing,
                      .seed = options.seed});
     // The envelope must resolve the shape: the reach is capped by the size and by the width.
-    out.half_width = surface_half_width(surface);
+    out.half_width = surface_half_width(surface.points, curve_tree);
     const double size_cap = options.max_reach_rel_diag * diag;
     const double width_cap = options.max_reach_rel_half_width * out.half_width;
     const double resolvable = std::min(size_cap, width_cap);
@@ -251,12 +253,7 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
 
   // Clearance: a candidate nearer than the clearance to M is not on its envelope (the
   // envelope of a sampled surface, or a self-intersecting envelope when rho is too large).
-  // The distance to the input and its boundary curves: the input's tree and one of the curves.
-  std::vector<Point3> curve_points;
-  for (const auto& c : surface.boundary)
-    for (const auto& b : c.vertices) curve_points.push_back(b.position);
-  PointTree curve_tree(curve_points.begin(), curve_points.end());
-  curve_tree.build();
+  // The distance to the input and its boundary curves: the input's tree and the curves'.
   auto nearest_distance2 = [&](const Point3& q) {
     double d2 = std::numeric_limits<double>::infinity();
     if (!surface.points.empty()) d2 = PointSearch(input_tree, q, 1).begin()->second;
