@@ -367,6 +367,14 @@ CLI::Option* add_boundary_options(CLI::App& sub, BuiltinSampling& sampling) {
   sub.add_flag("--no-boundary-inlet-closing",
                [&sampling](std::int64_t) { sampling.boundary.close_narrow_inlets = false; },
                "Point files: keep the narrow inlets that voids beside the rim cut into detected curves");
+  sub.add_flag("--boundary-density-steps",
+               [&sampling](std::int64_t) { sampling.boundary.drop_density_steps = true; },
+               "Point files: drop the detected rim samples beyond which the surface goes on, sampled more "
+               "sparsely (the edges of densely sampled parts)");
+  sub.add_flag("--boundary-local-spacing",
+               [&sampling](std::int64_t) { sampling.boundary.link_in_local_spacing = true; },
+               "Point files: link detected rims in their local sample spacing where that is larger than "
+               "the average (a part sampled several times more sparsely than the rest)");
   return given;
 }
 

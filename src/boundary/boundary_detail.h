@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace envcrust::boundary::detail {
@@ -42,17 +43,66 @@ struct FlaggedSubset {
 };
 FlaggedSubset flagged_subset(const std::vector<Point3>& points, const Candidates& candidates);
 
+/// Unflags the candidates ids[a] with drop[a] != 0 (flag, strength, conormal); returns how
+/// many (support_filter.cpp).
+std::size_t unflag(Candidates& candidates, const std::vector<std::size_t>& ids, const std::vector<char>& drop);
+
 /// Angle-gap test on the `neighbors` nearest points of each point (the first of its row of
 /// `table`, which has at least as many; angle_gap.cpp).
 Candidates angle_gap_candidates(const std::vector<Point3>& points,
                                 const std::vector<Vector3>& normals, const NeighbourTable& table,
                                 const BoundaryOptions& options);
 
+/// How far boundary candidates link: two are linked if they lie within the longer of their
+/// two reaches, one for all points or one per point (of the cloud).
+class LinkReach {
+ public:
+  explicit LinkReach(double uniform) : uniform_(uniform) {}
+  explicit LinkReach(std::vector<double> per_point) : per_point_(std::move(per_point)) {}
+  double operator()(std::size_t i) const { return per_point_.empty() ? uniform_ : per_point_[i]; }
+  /// One reach for all points.
+  [[nodiscard]] bool is_uniform() const { return per_point_.empty(); }
+
+ private:
+  double uniform_ = 0.0;
+  std::vector<double> per_point_;
+};
+
+/// Per point of the cloud: its average distance to its 6 nearest (`own`, as the average
+/// spacing s is averaged) and the median of that over the point and its `neighbors` nearest
+/// (`around`: the spacing of the part of the surface it lies in, not inflated at a rim, where
+/// a point's nearest lie on one side) (curve_linking.cpp).
+struct LocalSpacings {
+  std::vector<double> own;
+  std::vector<double> around;
+};
+LocalSpacings local_spacings(const std::vector<Point3>& points, const NeighbourTable& table, std::size_t neighbors);
+
+/// Per point, `link_distance` times the larger of the average spacing s and its `around`
+/// spacing: where a part of the surface is sampled more sparsely than the average its rim's
+/// samples are farther apart than the average spacing (curve_linking.cpp).
+LinkReach local_link_reach(const LocalSpacings& spacings, double link_distance, double spacing);
+
+/// Unflag candidates at a step in the sampling density, where the same surface goes on past
+/// their `neighbors` nearest points (rows of `table`) at a sparser spacing: among the samples
+/// of the sheet (`index` over all points) in the wedge beyond the candidate (within 45 degrees
+/// of its conormal, up to 8 neighbourhood radii), those past its neighbourhood (up to 3 times
+/// as far as the first) are at least two, their median own spacing is over twice the
+/// candidate's `around` spacing, and none of the nearest across the gap faces back (a hole's
+/// far rim). Returns how many it unflagged (density_steps.cpp).
+std::size_t unflag_density_steps(const std::vector<Point3>& points, const std::vector<Vector3>& normals,
+                                 const NeighbourTable& table, const PointIndex& index, const LocalSpacings& spacings,
+                                 Candidates& candidates, std::size_t neighbors);
+
+/// The links between the flagged candidates (`subset` of them, numbered in it): pairs within
+/// the longer of their reaches with c_i . c_j > min_dot, as adjacency lists (curve_linking.cpp).
+std::vector<std::vector<std::size_t>> candidate_links(const FlaggedSubset& subset, const Candidates& candidates,
+                                                      const LinkReach& reach, double min_dot);
+
 /// Hysteresis: keep strong candidates and the weak ones reachable from a strong one through
-/// links shorter than `radius` between candidates with c_i . c_j > min_dot; unflag the rest
-/// (support_filter.cpp). Returns the number unflagged.
+/// links (candidate_links); unflag the rest (support_filter.cpp). Returns the number unflagged.
 std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidates& candidates,
-                                     double radius, double min_dot);
+                                     const LinkReach& reach, double min_dot);
 
 /// Unflag candidates without consistent flagged neighbours on both sides along their tangent
 /// within `radius` (support_filter.cpp). Returns the number unflagged.
@@ -60,11 +110,11 @@ std::size_t filter_two_sided_support(const std::vector<Point3>& points,
                                      const std::vector<Vector3>& normals, Candidates& candidates,
                                      double radius, double min_dot);
 
-/// Connected components of flagged points linked within `radius` with c_i . c_j > min_dot,
-/// each sorted by index, components ordered by their smallest index (curve_linking.cpp).
+/// Connected components of the flagged points' links (candidate_links), each sorted by index,
+/// components ordered by their smallest index (curve_linking.cpp).
 std::vector<std::vector<std::size_t>> link_candidates(const std::vector<Point3>& points,
                                                       const Candidates& candidates,
-                                                      double radius, double min_dot);
+                                                      const LinkReach& reach, double min_dot);
 
 /// An ordered centreline through one component.
 struct Centreline {
@@ -94,12 +144,13 @@ struct ArcJoinLimits {
 std::size_t join_open_arcs(std::vector<std::vector<std::size_t>>& components, std::vector<Centreline>& lines,
                            const std::vector<Point3>& points, const PointIndex& index, const ArcJoinLimits& limits);
 
-/// Order a component along the diameter path of its linking-graph MST, then replace the path
-/// by averages of all component points binned by their arc-length position (curve_linking.cpp).
-/// With `conormals` (per point of `points`), only links whose conormals make a dot product
-/// above `min_conormal_dot` enter the tree, as link_candidates joined the component.
+/// Order a component along the diameter path of its linking-graph MST (links within the
+/// longer of their ends' reaches), then replace the path by averages of all component points
+/// binned by their arc-length position (curve_linking.cpp). With `conormals` (per point of
+/// `points`), only links whose conormals make a dot product above `min_conormal_dot` enter
+/// the tree, as link_candidates joined the component.
 Centreline order_component(const std::vector<Point3>& points,
-                           const std::vector<std::size_t>& component, double link_radius,
+                           const std::vector<std::size_t>& component, const LinkReach& reach,
                            double bin_width, const std::vector<Vector3>* conormals = nullptr,
                            double min_conormal_dot = -1.0);
 
@@ -144,8 +195,10 @@ Polyline resample_closed(const Polyline& curve, double spacing);
 /// and a fold's reversed tangent flips the conormal there (curve_frames.cpp).
 Polyline remove_switchbacks(const Polyline& curve);
 
-/// Cyclic moving average over 2 h + 1 vertices.
+/// Cyclic moving average over 2 h + 1 vertices (h at most (size - 1) / 2).
 Polyline smooth_closed(const Polyline& curve, int half_window);
+/// The same with h per vertex (`half_windows`, one per vertex of `curve`).
+Polyline smooth_closed(const Polyline& curve, const std::vector<int>& half_windows);
 
 /// Frames of a closed curve from the cloud: t by central differences, n = average of the
 /// nearest points' normal lines made perpendicular to t (sign propagated along the curve),

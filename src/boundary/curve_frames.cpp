@@ -50,14 +50,18 @@ Polyline remove_switchbacks(const Polyline& curve) {
 }
 
 Polyline smooth_closed(const Polyline& curve, int half_window) {
+  return smooth_closed(curve, std::vector<int>(curve.size(), half_window));
+}
+
+Polyline smooth_closed(const Polyline& curve, const std::vector<int>& half_windows) {
   const std::size_t m = curve.size();
-  if (half_window <= 0 || m < 3) return curve;
-  const auto h = static_cast<std::ptrdiff_t>(std::min<std::size_t>(
-      static_cast<std::size_t>(half_window), (m - 1) / 2));
+  if (m < 3) return curve;
+  const auto most = static_cast<std::ptrdiff_t>((m - 1) / 2);
   Polyline out;
   out.reserve(m);
   const auto sm = static_cast<std::ptrdiff_t>(m);
   for (std::ptrdiff_t i = 0; i < sm; ++i) {
+    const std::ptrdiff_t h = std::clamp<std::ptrdiff_t>(half_windows[static_cast<std::size_t>(i)], 0, most);
     Vector3 sum(0, 0, 0);
     for (std::ptrdiff_t d = -h; d <= h; ++d) {
       sum = sum + (curve[static_cast<std::size_t>(((i + d) % sm + sm) % sm)] - CGAL::ORIGIN);

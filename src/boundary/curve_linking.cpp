@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -65,20 +66,71 @@ void erase_edge(std::vector<std::vector<std::size_t>>& adj, std::size_t a, std::
 
 }  // namespace
 
-std::vector<std::vector<std::size_t>> link_candidates(const std::vector<Point3>& points,
-                                                      const Candidates& candidates,
-                                                      double radius, double min_dot) {
-  const auto [ids, flagged_points] = flagged_subset(points, candidates);
+LocalSpacings local_spacings(const std::vector<Point3>& points, const NeighbourTable& table, std::size_t neighbors) {
+  constexpr std::size_t kSpacingNeighbours = 6;
+  const std::size_t n = points.size();
+  LocalSpacings out;
+  out.own.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double sum = 0.0;
+    for (const std::uint32_t j : table.of(i).first(std::min<std::size_t>(kSpacingNeighbours, table.k())))
+      sum += std::sqrt(CGAL::squared_distance(points[i], points[j]));
+    out.own[i] = sum / static_cast<double>(kSpacingNeighbours + 1);
+  }
+  out.around.assign(n, 0.0);
+  std::vector<double> near;
+  for (std::size_t i = 0; i < n; ++i) {
+    near.assign(1, out.own[i]);
+    for (const std::uint32_t j : table.of(i).first(std::min<std::size_t>(neighbors, table.k()))) near.push_back(out.own[j]);
+    const auto mid = near.begin() + static_cast<std::ptrdiff_t>(near.size() / 2);
+    std::nth_element(near.begin(), mid, near.end());
+    out.around[i] = *mid;
+  }
+  return out;
+}
+
+LinkReach local_link_reach(const LocalSpacings& spacings, double link_distance, double spacing) {
+  std::vector<double> reach(spacings.around.size());
+  // The local spacing where it exceeds the average by half or more, the average below a
+  // third more, in between a ramp joining them: a part sampled as densely as the average (the
+  // local spacing scatters by about 10% around it, and reads up to 20% more along a rim)
+  // links as far as the average spacing says.
+  for (std::size_t i = 0; i < reach.size(); ++i) {
+    const double around = spacings.around[i];
+    reach[i] = link_distance * std::max(spacing, std::min(around, 3.0 * (around - spacing)));
+  }
+  return LinkReach(std::move(reach));
+}
+
+std::vector<std::vector<std::size_t>> candidate_links(const FlaggedSubset& subset, const Candidates& candidates,
+                                                      const LinkReach& reach, double min_dot) {
+  const auto& [ids, flagged_points] = subset;
   const PointIndex index(flagged_points);
-  UnionFind sets(ids.size());
+  std::vector<std::vector<std::size_t>> links(ids.size());
+  // Each pair is found from the end with the longer reach.
   for (std::size_t a = 0; a < ids.size(); ++a) {
-    for (const std::size_t b : index.within(flagged_points[a], radius)) {
-      if (b <= a) continue;
-      if (dot(candidates.conormals[ids[a]], candidates.conormals[ids[b]]) > min_dot) {
-        sets.unite(a, b);
-      }
+    for (const std::size_t b : index.within(flagged_points[a], reach(ids[a]))) {
+      if (b == a || dot(candidates.conormals[ids[a]], candidates.conormals[ids[b]]) <= min_dot) continue;
+      links[a].push_back(b);
+      links[b].push_back(a);
     }
   }
+  for (auto& list : links) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return links;
+}
+
+std::vector<std::vector<std::size_t>> link_candidates(const std::vector<Point3>& points,
+                                                      const Candidates& candidates,
+                                                      const LinkReach& reach, double min_dot) {
+  const FlaggedSubset subset = flagged_subset(points, candidates);
+  const auto& ids = subset.ids;
+  const auto links = candidate_links(subset, candidates, reach, min_dot);
+  UnionFind sets(ids.size());
+  for (std::size_t a = 0; a < ids.size(); ++a)
+    for (const std::size_t b : links[a]) sets.unite(a, b);
   std::vector<std::vector<std::size_t>> components;
   std::vector<std::size_t> slot(ids.size(), std::numeric_limits<std::size_t>::max());
   for (std::size_t a = 0; a < ids.size(); ++a) {
@@ -280,7 +332,7 @@ GivenCurves order_given_points(const std::vector<Point3>& points, const Candidat
       line.end_gap = std::sqrt(CGAL::squared_distance(line.points.back(), line.points.front()));
       line.open_length = line.length - line.end_gap;
     } else {
-      line = order_component(points, component, 1.01 * longest, bin_width);
+      line = order_component(points, component, LinkReach(1.01 * longest), bin_width);
     }
     out.components.push_back(std::move(component));
     out.centrelines.push_back(std::move(line));
@@ -321,7 +373,7 @@ Centreline bin_along_loop(const Polyline& band, const Polyline& loop, double bin
 }
 
 Centreline order_component(const std::vector<Point3>& points,
-                           const std::vector<std::size_t>& component, double link_radius,
+                           const std::vector<std::size_t>& component, const LinkReach& reach,
                            double bin_width, const std::vector<Vector3>* conormals, double min_conormal_dot) {
   Polyline local;
   local.reserve(component.size());
@@ -334,20 +386,21 @@ Centreline order_component(const std::vector<Point3>& points,
                                                              local.back(), local.front()));
     return out;
   }
-  // Minimum spanning tree (Kruskal, ties by index) of the distance graph within link_radius,
-  // of the links whose conormals agree when they are given: across a strip narrower than
-  // link_radius its two rims face each other, and a tree through such links takes a short
+  // Minimum spanning tree (Kruskal, ties by index) of the distance graph within the links'
+  // reach, of the links whose conormals agree when they are given: across a strip narrower
+  // than the reach its two rims face each other, and a tree through such links takes a short
   // cut across the strip instead of going round its end.
   const PointIndex index(local);
   std::vector<std::tuple<double, std::size_t, std::size_t>> edges;
   for (std::size_t a = 0; a < local.size(); ++a) {
-    for (const std::size_t b : index.within(local[a], link_radius)) {
-      if (b <= a) continue;
+    for (const std::size_t b : index.within(local[a], reach(component[a]))) {
+      if (b == a) continue;
       if (conormals && dot((*conormals)[component[a]], (*conormals)[component[b]]) <= min_conormal_dot) continue;
-      edges.emplace_back(std::sqrt(CGAL::squared_distance(local[a], local[b])), a, b);
+      edges.emplace_back(std::sqrt(CGAL::squared_distance(local[a], local[b])), std::min(a, b), std::max(a, b));
     }
   }
   std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   UnionFind sets(local.size());
   std::vector<std::vector<std::pair<std::size_t, double>>> adj(local.size());
   for (const auto& [len, a, b] : edges) {
@@ -357,7 +410,7 @@ Centreline order_component(const std::vector<Point3>& points,
     }
   }
   // Diameter path of the tree (of the component containing vertex 0: components are linked
-  // within link_radius, so this is all of it).
+  // within their reach, so this is all of it).
   std::vector<std::size_t> parent;
   const std::size_t end_a = farthest(adj, 0, parent);
   const std::size_t end_b = farthest(adj, end_a, parent);

@@ -177,15 +177,47 @@ double sheet_beyond_fraction(const BoundaryCurve& curve, const std::vector<Point
   return static_cast<double>(sampled) / static_cast<double>(m);
 }
 
+// The spacing a component's loop length is measured in: the median over its points of their
+// local spacing (link reach over link_distance), at least s. A loop in a sparsely sampled part
+// is held to as many of its own spacings as one elsewhere.
+double loop_spacing(const std::vector<std::size_t>& component, const detail::LinkReach& reach,
+                    double link_distance, double s) {
+  if (reach.is_uniform()) return std::max(s, reach(0) / link_distance);
+  std::vector<double> own;
+  own.reserve(component.size());
+  for (const std::size_t i : component) own.push_back(reach(i) / link_distance);
+  if (own.empty()) return s;
+  const auto mid = own.begin() + static_cast<std::ptrdiff_t>(own.size() / 2);
+  std::nth_element(own.begin(), mid, own.end());
+  return std::max(s, *mid);
+}
+
+// Per vertex of a curve resampled at spacing s, the smoothing's half window: as many vertices
+// as span smoothing_half_window local spacings (of the nearest sample; at least s), so that a
+// rim sampled sparsely is smoothed over as many of its samples as one sampled at s.
+std::vector<int> local_half_windows(const Polyline& curve, const detail::PointIndex& index,
+                                    const detail::LinkReach& reach, const BoundaryOptions& options, double s) {
+  std::vector<int> out;
+  out.reserve(curve.size());
+  for (const Point3& p : curve) {
+    const double local = std::max(s, reach(index.nearest_indices(p, 1).front()) / options.link_distance);
+    out.push_back(static_cast<int>(std::lround(options.smoothing_half_window * local / s)));
+  }
+  return out;
+}
+
 // Turns each component of flagged candidates, with its ordered centreline, into a closed,
 // framed curve (resampled, smoothed); fills `out` (curves, flags, conormals, warnings). With
-// `drop_small`, components whose centreline or final loop is shorter than min_loop_length or narrower than min_loop_width are
-// dropped and counted; without it only those that order into fewer than 3 points are, with a
-// warning.
+// `reach` (detected candidates), components whose centreline or final loop is shorter than
+// min_loop_length (in the component's own spacing, loop_spacing) or narrower than
+// min_loop_width are dropped and counted; without it only those that order into fewer than 3
+// points are, with a warning.
 void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>& normals,
                   const detail::PointIndex& index, const detail::Candidates& candidates,
                   const BoundaryOptions& options, const std::vector<std::vector<std::size_t>>& components,
-                  const std::vector<detail::Centreline>& lines, bool drop_small, BoundaryDetection& out) {
+                  const std::vector<detail::Centreline>& lines, const detail::LinkReach* reach,
+                  BoundaryDetection& out) {
+  const bool drop_small = reach != nullptr;
   const double s = out.spacing;
   const double output_spacing = options.curve_spacing.value_or(s);
   out.is_boundary_point.assign(points.size(), false);
@@ -203,12 +235,16 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
       }
       continue;
     }
-    if (drop_small && line.open_length < options.min_loop_length * s) {
+    const double min_length =
+        options.min_loop_length * (reach ? loop_spacing(component, *reach, options.link_distance, s) : s);
+    if (drop_small && line.open_length < min_length) {
       ++out.dropped_loops;
       continue;
     }
     Polyline curve = detail::resample_closed(line.points, s);
-    curve = detail::smooth_closed(curve, options.smoothing_half_window);
+    curve = reach && !reach->is_uniform()
+                ? detail::smooth_closed(curve, local_half_windows(curve, index, *reach, options, s))
+                : detail::smooth_closed(curve, options.smoothing_half_window);
     // Framed once for the inlets and the fit; again only when an inlet was cut off.
     std::optional<BoundaryCurve> unfitted;
     auto frame = [&] {
@@ -235,7 +271,7 @@ void build_curves(const std::vector<Point3>& points, const std::vector<Vector3>&
     // samples (a crack, a spur of the band) can be left a loop shorter than any kept one
     // (the face scan's: its path 26 spacings end to end, the loop 0.7): it is held to the
     // same length.
-    if (drop_small && mesh::closed_length(curve) < options.min_loop_length * s) {
+    if (drop_small && mesh::closed_length(curve) < min_length) {
       ++out.dropped_loops;
       continue;
     }
@@ -324,21 +360,28 @@ BoundaryDetection detect_checked(const std::vector<Point3>& points, const std::v
   const detail::PointIndex index(points);
 
   detail::Candidates candidates = detail::angle_gap_candidates(points, normals, table, options);
-  detail::keep_connected_to_strong(points, candidates, options.link_distance * s,
-                                   options.link_min_conormal_dot);
+  const auto neighbors = static_cast<std::size_t>(options.neighbors);
+  // Local spacings only for the options that read them (two passes over the table).
+  const detail::LocalSpacings spacings = options.drop_density_steps || options.link_in_local_spacing
+                                             ? detail::local_spacings(points, table, neighbors)
+                                             : detail::LocalSpacings{};
+  if (options.drop_density_steps)
+    detail::unflag_density_steps(points, normals, table, index, spacings, candidates, neighbors);
+  const detail::LinkReach reach = options.link_in_local_spacing
+                                      ? detail::local_link_reach(spacings, options.link_distance, s)
+                                      : detail::LinkReach(options.link_distance * s);
+  detail::keep_connected_to_strong(points, candidates, reach, options.link_min_conormal_dot);
   if (options.require_two_sided_support) {
     detail::filter_two_sided_support(points, normals, candidates, options.support_radius * s,
                                      options.link_min_conormal_dot);
   }
-  const double link_radius = options.link_distance * s;
-  auto components =
-      detail::link_candidates(points, candidates, link_radius, options.link_min_conormal_dot);
+  auto components = detail::link_candidates(points, candidates, reach, options.link_min_conormal_dot);
   std::vector<detail::Centreline> lines;
   // Each band is ordered along the diameter path of its linking tree; when that path's ends
   // stay apart (a small or ragged loop whose tree branches), along the NN-crust cycle of its
   // thinned centre line instead, if it has one.
   for (const auto& component : components) {
-    detail::Centreline line = detail::order_component(points, component, link_radius, s, &candidates.conormals,
+    detail::Centreline line = detail::order_component(points, component, reach, s, &candidates.conormals,
                                                       options.link_min_conormal_dot);
     if (line.end_gap > options.close_distance * s) {
       if (const auto cycle = detail::band_cycle(points, component, kBandSeedSpacing * s)) {
@@ -355,7 +398,7 @@ BoundaryDetection detect_checked(const std::vector<Point3>& points, const std::v
                           .max_join = kMaxArcJoin * s,
                           .max_join_local = kMaxArcJoinLocal,
                           .max_join_rel_arc = kMaxArcJoinRelArc});
-  build_curves(points, normals, index, candidates, options, components, lines, true, out);
+  build_curves(points, normals, index, candidates, options, components, lines, &reach, out);
   return out;
 }
 
@@ -428,7 +471,7 @@ BoundaryDetection boundary_from_points(const std::vector<Point3>& points,
   // Given points may be spaced unevenly: the NN-crust joins each to its curve neighbours.
   const detail::GivenCurves given_curves = detail::order_given_points(points, candidates, s);
   build_curves(points, normals, index, candidates, options, given_curves.components, given_curves.centrelines,
-               false, out);
+               nullptr, out);
   return out;
 }
 

@@ -19,10 +19,23 @@ FlaggedSubset flagged_subset(const std::vector<Point3>& points, const Candidates
   return out;
 }
 
+std::size_t unflag(Candidates& candidates, const std::vector<std::size_t>& ids, const std::vector<char>& drop) {
+  std::size_t removed = 0;
+  for (std::size_t a = 0; a < ids.size(); ++a) {
+    if (!drop[a]) continue;
+    candidates.flagged[ids[a]] = 0;
+    candidates.strong[ids[a]] = 0;
+    candidates.conormals[ids[a]] = Vector3(0, 0, 0);
+    ++removed;
+  }
+  return removed;
+}
+
 std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidates& candidates,
-                                     double radius, double min_dot) {
-  const auto [ids, flagged_points] = flagged_subset(points, candidates);
-  const PointIndex index(flagged_points);
+                                     const LinkReach& reach, double min_dot) {
+  const FlaggedSubset subset = flagged_subset(points, candidates);
+  const auto& ids = subset.ids;
+  const auto links = candidate_links(subset, candidates, reach, min_dot);
   std::vector<char> reached(ids.size(), 0);
   std::vector<std::size_t> queue;
   for (std::size_t a = 0; a < ids.size(); ++a) {
@@ -32,25 +45,14 @@ std::size_t keep_connected_to_strong(const std::vector<Point3>& points, Candidat
     }
   }
   for (std::size_t head = 0; head < queue.size(); ++head) {
-    const std::size_t a = queue[head];
-    for (const std::size_t b : index.within(flagged_points[a], radius)) {
-      if (reached[b] ||
-          dot(candidates.conormals[ids[a]], candidates.conormals[ids[b]]) <= min_dot) {
-        continue;
-      }
+    for (const std::size_t b : links[queue[head]]) {
+      if (reached[b]) continue;
       reached[b] = 1;
       queue.push_back(b);
     }
   }
-  std::size_t removed = 0;
-  for (std::size_t a = 0; a < ids.size(); ++a) {
-    if (!reached[a]) {
-      candidates.flagged[ids[a]] = 0;
-      candidates.conormals[ids[a]] = Vector3(0, 0, 0);
-      ++removed;
-    }
-  }
-  return removed;
+  for (char& r : reached) r = !r;  // now: not reached
+  return unflag(candidates, ids, reached);
 }
 
 std::size_t filter_two_sided_support(const std::vector<Point3>& points,
@@ -77,16 +79,8 @@ std::size_t filter_two_sided_support(const std::vector<Point3>& points,
                         keep[a] = ahead && behind ? 1 : 0;
                       }
                     });
-  std::size_t removed = 0;
-  for (std::size_t a = 0; a < ids.size(); ++a) {
-    if (!keep[a]) {
-      candidates.flagged[ids[a]] = 0;
-      candidates.strong[ids[a]] = 0;
-      candidates.conormals[ids[a]] = Vector3(0, 0, 0);
-      ++removed;
-    }
-  }
-  return removed;
+  for (char& k : keep) k = !k;  // now: to drop
+  return unflag(candidates, ids, keep);
 }
 
 }  // namespace envcrust::boundary::detail

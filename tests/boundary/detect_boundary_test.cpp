@@ -106,6 +106,7 @@ TEST(DetectBoundary, FitToOuterSamplesMovesCurvesOutToTheRimSamples) {
     const test::Run centre = test::run_detection("cylinder", 10000, noise, 11, off);
     const test::Run fitted = test::run_detection("cylinder", 10000, noise);
     print(std::string("cylinder 10k centre line") + (noise > 0 ? " noisy" : ""), centre);
+    print(std::string("cylinder 10k fitted") + (noise > 0 ? " noisy" : ""), fitted);
     EXPECT_LT(centre.score.mean_offset, -0.7) << noise;
     EXPECT_GT(fitted.score.mean_offset - centre.score.mean_offset, noise > 0 ? 0.03 : 0.15) << noise;
     EXPECT_EQ(fitted.score.detected_loops, 2u);
@@ -328,7 +329,9 @@ TEST(DetectBoundary, LensHoleWithUnflaggedTipsIsOneLoop) {
 // A unit square sampled at random (seed 9, 8k points) with a round hole of radius 0.1 at
 // (0.7, 0.5) and, at (0.3, 0.5), a disc of radius 0.1 sampled 10 times more densely (the
 // lion head scan has such patches). The angle-gap test flags the dense patch's rim too (its
-// nearest neighbours lie on the dense side); the sparse samples around it tell it from a hole.
+// nearest neighbours lie on the dense side); the sparse samples around it tell it from a
+// hole: as a step in the density (drop_density_steps), or, by default, once its loop is
+// made, as a loop beyond which the sheet goes on (max_sampled_beyond).
 TEST(DetectBoundary, DensePatchRimIsNoBoundaryButAHoleIs) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -351,6 +354,13 @@ TEST(DetectBoundary, DensePatchRimIsNoBoundaryButAHoleIs) {
     for (const BoundaryVertex& v : c.vertices) x += v.position.x();
     return x / static_cast<double>(c.vertices.size());
   };
+  boundary::BoundaryOptions steps;
+  steps.drop_density_steps = true;
+  const auto stepped = boundary::detect_boundary(points, normals, steps);
+  ASSERT_EQ(stepped.curves.size(), 2u);
+  for (const BoundaryCurve& c : stepped.curves) EXPECT_FALSE(std::abs(centre_x(c) - 0.3) < 0.05);
+  for (const auto& w : stepped.warnings) EXPECT_EQ(w.find(") dropped: its conormals point out of it"), std::string::npos) << w;
+
   boundary::BoundaryOptions keep_all;
   keep_all.max_sampled_beyond = 1.0;
   const auto all = boundary::detect_boundary(points, normals, keep_all);

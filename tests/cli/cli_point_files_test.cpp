@@ -300,6 +300,55 @@ TEST_F(CliTest, reconstruct_a_narrow_strip_with_rho_from_its_width) {
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 }
 
+// An annulus (radii 0.3 and 1, 20,000 samples at random) sampled ten times more densely on
+// its half x > 0: the dense half's samples along the step have all their nearest neighbours
+// on their side and are read as a boundary, and the sparse half's rims fall into pieces (by
+// default the result is a disc with one loop); with --boundary-density-steps the step is no
+// boundary, and with --boundary-local-spacing the sparse rims are linked in their own
+// spacing.
+TEST_F(CliTest, reconstruct_an_annulus_whose_density_steps_tenfold) {
+  {
+    std::ofstream out(path("annulus.xyz"));
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    out << std::setprecision(17);
+    for (int written = 0; written < 20000;) {
+      const double r = std::sqrt(0.09 + 0.91 * u(rng)), a = 2 * M_PI * u(rng);
+      const double x = r * std::cos(a), y = r * std::sin(a);
+      if (x < 0 && u(rng) > 0.1) continue;
+      out << x << ' ' << y << " 0\n";
+      ++written;
+    }
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("annulus.xyz") + " -o " + path("annulus.ply") +
+                                   " --boundary-density-steps --boundary-local-spacing --json");
+  EXPECT_EQ(j["input_boundary_curves"], 2);
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["components"], 1);
+  EXPECT_EQ(a["euler_characteristic"], 0);
+  ASSERT_EQ(a["boundary_loops"], 2);
+  EXPECT_EQ(a["self_intersections"]["face_pairs"], 0);
+  // The loops: the circles of radius 1 and 0.3 (lengths 6.28 and 1.88), a little inside.
+  std::vector<double> lengths;
+  for (const auto& loop : a["loops"]) lengths.push_back(loop["length"].get<double>());
+  std::sort(lengths.begin(), lengths.end());
+  ASSERT_EQ(lengths.size(), 2u);
+  EXPECT_NEAR(lengths[0], 2 * M_PI * 0.3, 0.25) << lengths[0] << " " << lengths[1];
+  EXPECT_NEAR(lengths[1], 2 * M_PI, 0.4);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
+
+  // With the step kept as a boundary the detector's curves run along it too.
+  const auto total_length = [](const nlohmann::json& report) {
+    double sum = 0.0;
+    for (const auto& curve : report["curves"]) sum += curve["length"].get<double>();
+    return sum;
+  };
+  const auto plain = run_envcrust_json("boundary " + path("annulus.xyz") +
+                                       " --boundary-density-steps --boundary-local-spacing --json");
+  const auto kept = run_envcrust_json("boundary " + path("annulus.xyz") + " --boundary-local-spacing --json");
+  EXPECT_GT(total_length(kept), total_length(plain) + 0.2) << kept["curves"].dump();
+}
+
 // Issue #5: the boundary of a point cloud can be given instead of detected.
 TEST_F(CliTest, reconstruct_with_given_boundary_points) {
   ASSERT_EQ(run_envcrust("sample cylinder -n 10000 --seed 3 -q -o " + path("c.xyz") + " --boundary-out " +
