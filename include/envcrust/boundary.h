@@ -67,8 +67,9 @@ struct BoundaryOptions {
   /// Radius of the support test, in s, > 0. 3: a few neighbours along a boundary at any N.
   double support_radius = 3.0;
   /// Candidates closer than this (in s, > 0) with consistent conormals are linked into one
-  /// curve (with link_in_local_spacing, in the local spacing where that is larger). 5: METHOD's 2.5 assumed s = nearest-neighbour distance; with CGAL's s the flagged
-  /// band has random gaps beyond 2.5 s (10k points: cylinder 12 pieces at 2.5, 2 loops at 4;
+  /// curve (with link_in_local_spacing, in the local spacing where that is larger). 5:
+  /// METHOD's 2.5 assumed s = nearest-neighbour distance; with CGAL's s the flagged band has
+  /// random gaps beyond 2.5 s (10k points: cylinder 12 pieces at 2.5, 2 loops at 4;
   /// 50k points: saddle, Moebius, unknot ribbon still cut once at 4, whole at 5 and 6).
   double link_distance = 5.0;
   /// Linked candidates need c_i . c_j above this, in [-1, 1). 0.5 (60 degrees) separates the

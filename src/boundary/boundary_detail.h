@@ -78,9 +78,10 @@ struct LocalSpacings {
 };
 LocalSpacings local_spacings(const std::vector<Point3>& points, const NeighbourTable& table, std::size_t neighbors);
 
-/// Per point, `link_distance` times the larger of the average spacing s and its `around`
-/// spacing: where a part of the surface is sampled more sparsely than the average its rim's
-/// samples are farther apart than the average spacing (curve_linking.cpp).
+/// Per point, `link_distance` times its `around` spacing where that is at least 1.5 s (s the
+/// average spacing), times s where it is below 1.33 s, and a ramp between: where a part of
+/// the surface is sampled more sparsely than the average its rim's samples are farther apart
+/// than the average spacing, while an evenly sampled cloud links as within s (curve_linking.cpp).
 LinkReach local_link_reach(const LocalSpacings& spacings, double link_distance, double spacing);
 
 /// Unflag candidates at a step in the sampling density, where the same surface goes on past
