@@ -107,10 +107,12 @@ std::vector<std::vector<std::size_t>> candidate_links(const FlaggedSubset& subse
   const auto& [ids, flagged_points] = subset;
   const PointIndex index(flagged_points);
   std::vector<std::vector<std::size_t>> links(ids.size());
-  // Each pair is found from the end with the longer reach.
+  // Each pair is found from the end with the longer reach; with one reach for all, from both
+  // ends, and taken from the lower.
   for (std::size_t a = 0; a < ids.size(); ++a) {
     for (const std::size_t b : index.within(flagged_points[a], reach(ids[a]))) {
-      if (b == a || dot(candidates.conormals[ids[a]], candidates.conormals[ids[b]]) <= min_dot) continue;
+      if (b == a || (reach.is_uniform() && b < a)) continue;
+      if (dot(candidates.conormals[ids[a]], candidates.conormals[ids[b]]) <= min_dot) continue;
       links[a].push_back(b);
       links[b].push_back(a);
     }
