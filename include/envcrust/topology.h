@@ -86,8 +86,11 @@ std::vector<BoundaryLoop> boundary_loops(const TriangleMesh& mesh);
 
 /// Flip triangles so that faces sharing an edge run it in opposite directions: every
 /// orientable piece (faces joined through two-face edges) comes out consistently wound, a
-/// closed one facing outward (positive signed volume); a non-orientable piece is wound
-/// consistently except across one seam of edges. Faces with a repeated vertex are left alone.
+/// closed one facing outward (positive signed volume), an open one facing out of the volume
+/// it encloses once cones over its borders close it (a hemisphere's dome, a range scan's
+/// front; a flat piece faces where its vector area's largest component is positive); a
+/// non-orientable piece is wound consistently except across one seam of edges. Faces with a
+/// repeated vertex are left alone.
 /// Vertices are not welded: call it on a mesh whose shared vertices share indices.
 /// @returns the number of faces flipped.
 std::size_t orient_faces(TriangleMesh& mesh);

@@ -31,11 +31,19 @@ TEST(ResultOrientation, hemisphere_faces_like_its_outward_normals_and_turns_with
   EXPECT_LT(outward_fraction(inward.mesh), 0.001);
 }
 
-TEST(ResultOrientation, is_left_as_it_comes_for_estimated_normal_lines) {
+// Normal lines without a sign (estimated ones) do not turn the result: it faces out of the
+// volume its border loop closes (the dome's outside), whichever signs the lines came with.
+TEST(ResultOrientation, faces_out_of_the_volume_its_borders_close_for_estimated_normal_lines) {
   pipeline::InputKind kind;
   kind.are_normals_estimated = true;
-  EXPECT_FALSE(pipeline::options_for_input(kind).use_normal_orientation);
+  const auto options = pipeline::options_for_input(kind);
+  EXPECT_FALSE(options.use_normal_orientation);
   EXPECT_TRUE(pipeline::options_for_input({}).use_normal_orientation);
+  auto samples = fixtures::builtin_samples("hemisphere", 3000);
+  for (std::size_t i = 0; i < samples.normals.size(); i += 2) samples.normals[i] = -samples.normals[i];
+  EXPECT_GT(outward_fraction(pipeline::reconstruct(samples, options).mesh), 0.999);
+  for (auto& n : samples.normals) n = -n;
+  EXPECT_GT(outward_fraction(pipeline::reconstruct(samples, options).mesh), 0.999);
 }
 
 }  // namespace

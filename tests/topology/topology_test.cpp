@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <CGAL/centroid.h>
+
 #include <algorithm>
+#include <functional>
 #include <numbers>
 
 using namespace envcrust;
@@ -97,6 +100,55 @@ TEST(OrientFaces, winds_open_and_closed_surfaces_consistently_and_closed_ones_ou
   for (auto& t : cube.triangles) std::swap(t[1], t[2]);
   EXPECT_EQ(topology::orient_faces(cube), cube.triangles.size());
   EXPECT_NEAR(signed_volume(cube), outward, 1e-12);
+}
+
+// Per face: its area vector against `away(centroid)`; the count of faces that agree.
+static std::size_t faces_facing(const TriangleMesh& m, const std::function<Vector3(const Point3&)>& away) {
+  std::size_t agree = 0;
+  for (const auto& t : m.triangles) {
+    const Point3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    agree += CGAL::cross_product(b - a, c - a) * away(CGAL::centroid(a, b, c)) > 0;
+  }
+  return agree;
+}
+
+TEST(OrientFaces, turns_open_pieces_out_of_the_volume_their_borders_close) {
+  // Dome of the unit sphere above z = 0.2 (one loop), the open cylinder (two): out is away
+  // from the centre / the axis, whichever way the faces came wound.
+  const auto dome = fixtures::grid_mesh(24, 6, [](double u, double v) {
+    const double polar = 0.01 + v * std::acos(0.2), a = 2 * std::numbers::pi * u;
+    return Point3(std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar));
+  }, fixtures::Glue::Periodic);
+  auto from_centre = [](const Point3& p) { return p - CGAL::ORIGIN; };
+  auto from_axis = [](const Point3& p) { return Vector3(p.x(), p.y(), 0); };
+  for (bool reversed : {false, true}) {
+    for (const auto& [mesh, away] : {std::pair{dome, std::function<Vector3(const Point3&)>(from_centre)},
+                                     std::pair{fixtures::open_cylinder(24, 6), std::function<Vector3(const Point3&)>(from_axis)}}) {
+      auto m = scrambled(mesh);
+      if (reversed)
+        for (auto& t : m.triangles) std::swap(t[1], t[2]);
+      topology::orient_faces(m);
+      EXPECT_EQ(faces_facing(m, away), m.triangles.size()) << "reversed " << reversed;
+    }
+  }
+  // Two flat squares (no volume): each faces where its vector area's largest component is
+  // positive, +z for the xy-plane one, +y for the xz-plane one, also when given the other way.
+  auto flat = fixtures::square(4);
+  for (auto& t : flat.triangles) std::swap(t[1], t[2]);
+  auto upright = fixtures::square(4);
+  for (auto& p : upright.vertices) p = Point3(p.x(), 0, p.y() + 3);
+  const auto flat_faces = flat.triangles.size();
+  for (auto t : upright.triangles) {
+    for (auto& v : t) v += static_cast<Index>(flat.vertices.size());
+    flat.triangles.push_back(t);
+  }
+  flat.vertices.insert(flat.vertices.end(), upright.vertices.begin(), upright.vertices.end());
+  topology::orient_faces(flat);
+  TriangleMesh first = flat, second = flat;
+  first.triangles.resize(flat_faces);
+  second.triangles.erase(second.triangles.begin(), second.triangles.begin() + static_cast<std::ptrdiff_t>(flat_faces));
+  EXPECT_EQ(faces_facing(first, [](const Point3&) { return Vector3(0, 0, 1); }), first.triangles.size());
+  EXPECT_EQ(faces_facing(second, [](const Point3&) { return Vector3(0, 1, 0); }), second.triangles.size());
 }
 
 TEST(OrientFaces, leaves_a_moebius_strip_with_one_seam) {
