@@ -180,7 +180,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
       result.stats.holes_filled +=
           fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
     if (options.use_fill_away_from_boundary)
-      result.stats.holes_filled += fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
+      result.stats.holes_filled += fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Fan);
     result.stats.vertices_split += split_pinched_vertices(sheet);
     compact_vertices(sheet);
     const auto snapped = snap_border(sheet, surface, envelope.rho,

@@ -17,6 +17,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <unordered_map>
 
 namespace envcrust::extract {
 
@@ -270,6 +271,7 @@ std::size_t drop_far_faces(TaggedMesh& t, const NearestIndex& nearest, const std
 
 namespace {
 
+// Triangles from the loop's edges to its centroid (a new vertex).
 void fill_with_fan(TaggedMesh& t, const std::vector<Index>& loop) {
   Vector3 sum(0, 0, 0);
   for (Index v : loop) sum = sum + (t.mesh.vertices[v] - CGAL::ORIGIN);
@@ -279,6 +281,51 @@ void fill_with_fan(TaggedMesh& t, const std::vector<Index>& loop) {
     t.mesh.triangles.push_back({loop[i], loop[(i + 1) % loop.size()], centre});
     t.face_dot.push_back(-1.0);
   }
+}
+
+// The simple cycles of a loop that passes through a vertex more than once (a pinch: the
+// border touches itself), split there: v a b v c d -> (v a b), (v c d). Each keeps its
+// vertices' order; cycles of fewer than 3 vertices (an edge walked there and back) drop out.
+std::vector<std::vector<Index>> simple_cycles(const std::vector<Index>& loop) {
+  std::vector<std::vector<Index>> cycles;
+  std::vector<Index> stack;
+  std::unordered_map<Index, std::size_t> at;  // vertex -> its position on the stack
+  for (Index v : loop) {
+    const auto it = at.find(v);
+    if (it != at.end()) {
+      std::vector<Index> cycle(stack.begin() + static_cast<std::ptrdiff_t>(it->second), stack.end());
+      for (std::size_t k = 1; k < cycle.size(); ++k) at.erase(cycle[k]);
+      stack.resize(it->second + 1);
+      if (cycle.size() >= 3) cycles.push_back(std::move(cycle));
+      continue;
+    }
+    at[v] = stack.size();
+    stack.push_back(v);
+  }
+  if (stack.size() >= 3) cycles.push_back(std::move(stack));
+  return cycles;
+}
+
+}  // namespace
+
+void fill_hole(TaggedMesh& t, const std::vector<Index>& loop, const std::unordered_set<std::uint64_t>& sheet_edges) {
+  if (fill_with_patch(t, loop, sheet_edges)) return;
+  const auto cycles = simple_cycles(loop);
+  if (cycles.size() < 2) {
+    fill_with_fan(t, loop);
+    return;
+  }
+  for (const auto& cycle : cycles)
+    if (!fill_with_patch(t, cycle, sheet_edges)) fill_with_fan(t, cycle);
+}
+
+namespace {
+
+std::vector<std::vector<Index>> vertices_of(const std::vector<topology::BoundaryLoop>& loops) {
+  std::vector<std::vector<Index>> out;
+  out.reserve(loops.size());
+  for (const auto& loop : loops) out.push_back(loop.vertices);
+  return out;
 }
 
 }  // namespace
@@ -326,10 +373,13 @@ bool runs_along_boundary(const TriangleMesh& m, const std::vector<Index>& loop, 
 std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point3>& boundary_points,
                                           double max_distance, HoleFill fill) {
   const NearestIndex nearest(boundary_points);
+  const auto loops = topology::boundary_loops(t.mesh);
+  const auto sheet_edges = edges_among(t.mesh, vertices_of(loops));
   std::size_t filled = 0;
-  for (const auto& loop : topology::boundary_loops(t.mesh)) {
+  for (const auto& loop : loops) {
     if (loop.vertices.size() < 3 || runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance)) continue;
-    if (fill == HoleFill::Fan || !fill_with_patch(t, loop.vertices)) fill_with_fan(t, loop.vertices);
+    if (fill == HoleFill::Fan) fill_with_fan(t, loop.vertices);
+    else fill_hole(t, loop.vertices, sheet_edges);
     ++filled;
   }
   return filled;

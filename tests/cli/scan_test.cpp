@@ -100,9 +100,10 @@ TEST_F(CliTest, issue_5_bunny_with_adaptive_rho_is_one_genus_0_piece) {
 // by fitted normal lines, whose neighbourhoods span the ears' two sides: the uniform run at
 // the automatic rho (raised to 0.0141 to bridge the sparse parts) is empty, and the adaptive
 // retry (rho up to 0.028) is kept, the input's disc with its ears and mouth cut and closed:
-// measured 3.46% / 5.27% of the diagonal, 1,891 crossing pairs found in the sheet and 440
-// left (with the creases joined by the sheet, --creases join: the uniform run a disc, 4.40% /
-// 5.98%, 504 left).
+// measured 2.60% / 5.84% of the diagonal, 8,790 crossing pairs found in the sheet and none
+// left (3.46% / 5.27%, 1,891 found and 440 left, before the long cut holes got smooth discs
+// on 2026-12-04; with the creases joined by the sheet, --creases join: the uniform run a
+// disc, 4.40% / 5.98%, 504 left, before that).
 TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "cgal_lion_head";
   if (!std::filesystem::exists(folder / "lion-head.off")) GTEST_SKIP() << "no " << folder;
@@ -129,7 +130,8 @@ TEST_F(CliTest, issue_5_lion_head_mesh_is_a_disc_with_its_border_loop) {
 // The lion head as a point file (8,356 points whose spacing varies 20x): the detector
 // flags the sparse neck rim in four arcs, joined into one loop, and the rims of two densely
 // sampled patches, which are dropped (the sheet goes on beyond them). The uniform run gives a
-// disc (measured 4.9% and 7.0% of the diagonal; before, a retry with adaptive rho gave the
+// disc (measured 3.9% and 6.1% of the diagonal since the long cut holes got smooth discs,
+// 4.9% and 7.0% before; before that, a retry with adaptive rho gave the
 // disc at 4.4% / 7.9%, earlier rounds 4.1% / 7.5% and 4.5% / 6.8%; the ears and the open
 // mouth are cut out as handles and closed).
 TEST_F(CliTest, issue_5_lion_head_points_are_a_disc_with_the_neck_loop) {
@@ -215,7 +217,9 @@ TEST_F(CliTest, issue_4_power_crust_reproduces_the_original_programs_samples) {
 }
 
 // The original program's samples through `reconstruct` with the defaults. The capsules come
-// out of the envelope (2 spheres). The knotted tube, about 15 samples around a tube of radius
+// out of the envelope (2 spheres; one end, where the two capsules come near, is cut out as
+// no disc and closed: measured 2.77% from the points with a fan there, 3.05% with the smooth
+// disc since 2026-12-04). The knotted tube, about 15 samples around a tube of radius
 // 1 and 0.7 apart along it, is too sparse for any envelope (its gaps need rho 0.84, the tube
 // allows less than 1, and the estimated normals read a false boundary curve): the envelope's
 // result falls into 6 pieces where the samples hold together, so the direct Power Crust runs
@@ -228,7 +232,7 @@ TEST_F(CliTest, issue_5_closed_samples_too_sparse_for_the_envelope_get_the_power
   EXPECT_FALSE(hotdogs.contains("power_crust_fallback"));
   EXPECT_EQ(hotdogs["analysis"]["components"], 2);
   EXPECT_EQ(hotdogs["analysis"]["euler_characteristic"], 4);
-  EXPECT_LT(hotdogs["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.03);
+  EXPECT_LT(hotdogs["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.035);
 
   const auto knot = run_envcrust_json("reconstruct " + (folder / "knot.pts").string() + " -o " + path("knot.ply") +
                                       " --json");

@@ -7,9 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <unordered_set>
 
 using namespace envcrust;
 using namespace envcrust::extract;
@@ -232,6 +235,107 @@ TEST(FillWithPatch, refuses_a_loop_that_passes_a_vertex_twice) {
   EXPECT_FALSE(fill_with_patch(m, loop));
   EXPECT_EQ(m.mesh.triangles, original.mesh.triangles);
   EXPECT_EQ(m.mesh.vertices.size(), original.mesh.vertices.size());
+}
+
+namespace {
+
+// The most faces any vertex of `mesh` has.
+int largest_valence(const TriangleMesh& mesh) {
+  std::vector<int> faces_at(mesh.vertices.size(), 0);
+  for (const auto& f : mesh.triangles)
+    for (Index v : f) ++faces_at[v];
+  return *std::max_element(faces_at.begin(), faces_at.end());
+}
+
+// The grid plane whole again: one manifold disc of its full area, and no vertex with more
+// than a dozen faces (a fan from one point over a hole has as many as the hole's border).
+void expect_the_whole_plane_with_no_fan(const TriangleMesh& mesh) {
+  const auto t = topology::analyze_topology(mesh);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.euler_characteristic, 1);
+  EXPECT_EQ(t.boundary_loops.size(), 1u);
+  EXPECT_NEAR(total_area(mesh), 36.0, 1e-9);
+  EXPECT_LE(largest_valence(mesh), 12);
+}
+
+}  // namespace
+
+// Two 0.5 x 0.5 holes whose corners touch at one vertex: the border passes that vertex twice.
+// Each is closed with its own flat disc (no fan from one point over both): the plane is one
+// manifold disc again, of its full area, and no vertex takes more than a dozen faces.
+TEST(FillWithPatch, closes_holes_that_touch_at_a_vertex_each_with_its_own_disc) {
+  TaggedMesh m = grid_plane([](int i, int j) {
+    return (i >= 20 && i < 25 && j >= 20 && j < 25) || (i >= 25 && i < 30 && j >= 25 && j < 30);
+  });
+  m.face_dot.assign(m.mesh.triangles.size(), -1.0);
+  const std::size_t filled = fill_loops_away_from_boundary(m, plane_rim_points(), 0.05, HoleFill::Patch);
+  EXPECT_GE(filled, 1u);
+  expect_the_whole_plane_with_no_fan(m.mesh);
+}
+
+// The same two holes walked as one loop through their common vertex (as a cut's border can
+// come): fill_hole closes each of its two cycles with a disc of its own.
+TEST(FillHole, closes_a_loop_through_one_vertex_twice_cycle_by_cycle) {
+  TaggedMesh m = grid_plane([](int i, int j) {
+    return (i >= 20 && i < 25 && j >= 20 && j < 25) || (i >= 25 && i < 30 && j >= 25 && j < 30);
+  });
+  m.face_dot.assign(m.mesh.triangles.size(), -1.0);
+  std::vector<Index> loop;
+  auto walk = [&](int i0, int j0, int di, int dj, int steps) {
+    for (int s = 0; s < steps; ++s) loop.push_back(grid_id(i0 + s * di, j0 + s * dj));
+  };
+  walk(20, 20, 1, 0, 5);   // the first hole's bottom, then its right side up to (25, 25)
+  walk(25, 20, 0, 1, 5);
+  walk(25, 25, 1, 0, 5);   // round the second hole back to (25, 25)
+  walk(30, 25, 0, 1, 5);
+  walk(30, 30, -1, 0, 5);
+  walk(25, 30, 0, -1, 5);
+  walk(25, 25, -1, 0, 5);  // the first hole's top and left side
+  walk(20, 25, 0, -1, 5);
+  ASSERT_EQ(loop.size(), 40u);
+  fill_hole(m, loop, edges_among(m.mesh, {loop}));
+  expect_the_whole_plane_with_no_fan(m.mesh);
+}
+
+// A long wavy loop alone (a crown: 400 vertices round a unit circle, up and down 0.3 twelve
+// times), as long cut holes come, once as it is (CGAL's triangulation) and once with every
+// chord between two of its vertices taken by the sheet already (no triangulation of the
+// loop's own vertices can be used: the rings shrunk from the loop close it): each time a
+// disc whose only border is the loop, with no vertex of high valence (a fan from the centre
+// had 400) and within the loop's reach (fairing overshoots the waves a little).
+TEST(FillWithPatch, closes_a_long_wavy_loop_with_an_even_disc_also_when_every_chord_is_taken) {
+  constexpr int n = 400;
+  TaggedMesh crown;
+  std::vector<Index> loop;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    loop.push_back(static_cast<Index>(i));
+    crown.mesh.vertices.emplace_back(std::cos(a), std::sin(a), 0.3 * std::sin(12 * a));
+  }
+  std::unordered_set<std::uint64_t> every_chord;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 2; j < n; ++j)
+      if (i != 0 || j != n - 1) every_chord.insert(edge_key(static_cast<Index>(i), static_cast<Index>(j)));
+  for (const bool taken : {false, true}) {
+    TaggedMesh m = crown;
+    ASSERT_TRUE(fill_with_patch(m, loop, taken ? every_chord : std::unordered_set<std::uint64_t>{}));
+    EXPECT_EQ(m.face_dot.size(), m.mesh.triangles.size());
+    const auto t = topology::analyze_topology(m.mesh);
+    EXPECT_TRUE(t.is_manifold()) << taken;
+    EXPECT_EQ(t.euler_characteristic, 1) << taken;
+    ASSERT_EQ(t.boundary_loops.size(), 1u) << taken;
+    EXPECT_EQ(t.boundary_loops[0].vertices.size(), static_cast<std::size_t>(n));
+    for (const auto& f : m.mesh.triangles) {
+      if (!taken) continue;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_FALSE(f[k] < n && f[(k + 1) % 3] < n && every_chord.count(edge_key(f[k], f[(k + 1) % 3])));
+    }
+    EXPECT_LE(largest_valence(m.mesh), 16) << taken;
+    for (const Point3& p : m.mesh.vertices) {
+      EXPECT_LE(std::hypot(p.x(), p.y()), 1.0 + 1e-9) << taken;
+      EXPECT_LE(std::abs(p.z()), 0.6) << taken;
+    }
+  }
 }
 
 // A piece that a cut separated from the rest has only loops away from the boundary curves:
