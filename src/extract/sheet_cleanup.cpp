@@ -374,7 +374,8 @@ std::size_t fill_loops_away_from_boundary(TaggedMesh& t, const std::vector<Point
                                           double max_distance, HoleFill fill) {
   const NearestIndex nearest(boundary_points);
   const auto loops = topology::boundary_loops(t.mesh);
-  const auto sheet_edges = edges_among(t.mesh, vertices_of(loops));
+  const auto sheet_edges =
+      fill == HoleFill::Patch ? edges_among(t.mesh, vertices_of(loops)) : std::unordered_set<std::uint64_t>{};
   std::size_t filled = 0;
   for (const auto& loop : loops) {
     if (loop.vertices.size() < 3 || runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance)) continue;
