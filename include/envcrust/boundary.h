@@ -1,5 +1,5 @@
 // Boundary curves of a surface: detected in a point cloud with normal lines (angle-gap test,
-// linking, ordering, frames; METHOD.md section 3.3c-d), or read off a triangle mesh (section 1).
+// linking, ordering, frames; docs/method.md §6.3-6.5), or read off a triangle mesh (§3.2).
 #pragma once
 
 #include "envcrust/neighbour_table.h"
@@ -16,7 +16,7 @@ namespace envcrust::boundary {
 /// (normals::average_spacing, k 6) unless a field says otherwise.
 struct BoundaryOptions {
   /// Neighbours of the angle-gap test, >= 8. 32: at 10k random points k 16 flags ~9% of the
-  /// interior (random voids), k 32 ~0.1% while still finding most boundary points (METHOD §5).
+  /// interior (random voids), k 32 ~0.1% while still finding most boundary points (docs/method.md §6.3).
   int neighbors = 32;
   /// A point is a boundary candidate if the largest circular gap between the polar angles of
   /// its neighbours (projected on the tangent plane) exceeds this, degrees in (0, 360).
@@ -56,7 +56,7 @@ struct BoundaryOptions {
   /// above gap_threshold_deg. Densifies the boundary band without admitting isolated voids.
   double weak_gap_threshold_deg = 90.0;
   /// The two conormal estimates (neighbour centroid, gap bisector) may differ by at most this
-  /// many degrees, in (0, 180]; else the candidate is unreliable and dropped. 60 per METHOD.
+  /// many degrees, in (0, 180]; else the candidate is unreliable and dropped (docs/method.md §6.3).
   double conormal_agreement_deg = 60.0;
   /// Keep a candidate only if, within `support_radius`, other candidates with a consistent
   /// conormal (c_i . c_j > link_min_conormal_dot) exist on both sides along the tangent
@@ -68,7 +68,7 @@ struct BoundaryOptions {
   double support_radius = 3.0;
   /// Candidates closer than this (in s, > 0) with consistent conormals are linked into one
   /// curve (with link_in_local_spacing, in the local spacing where that is larger). 5:
-  /// METHOD's 2.5 assumed s = nearest-neighbour distance; with CGAL's s the flagged band has
+  /// 2.5 s would do for s = the nearest-neighbour distance; with CGAL's s the flagged band has
   /// random gaps beyond 2.5 s (10k points: cylinder 12 pieces at 2.5, 2 loops at 4;
   /// 50k points: saddle, Moebius, unknot ribbon still cut once at 4, whole at 5 and 6).
   double link_distance = 5.0;
@@ -80,13 +80,13 @@ struct BoundaryOptions {
   /// of a whole loop's path are up to a link length apart (measured 3.5-4.7 s at 50k points).
   double close_distance = 5.0;
   /// Half-width of the moving average applied to the curve resampled at spacing s, >= 0
-  /// vertices. 3 per METHOD: removes the band's zig-zag, shrinks a radius-R arc by ~(3s)^2/R.
+  /// vertices. 3 (docs/method.md §6.4): removes the band's zig-zag, shrinks a radius-R arc by ~(3s)^2/R.
   int smoothing_half_window = 3;
   /// Components whose ordered centreline (without the closing segment) is shorter than this
   /// (in s, >= 0) are dropped and counted (scan holes, interior voids). 20: at 50k points
   /// chains of false candidates around voids reach 10 s (sphere: 4 false loops at 10 s); a
   /// hole of circumference < 20 s is also below the envelope's resolution (rho ~ 4.5 s fills
-  /// holes shorter than 2 pi rho, METHOD section 5). The final loop is held to it too (a
+  /// holes shorter than 2 pi rho, docs/method.md §8.4). The final loop is held to it too (a
   /// path out and back along one chain, its switchbacks removed, can be left shorter).
   double min_loop_length = 20.0;
   /// Loops narrower than this many local spacings are sampling gaps, not holes, and are
@@ -149,7 +149,7 @@ struct BoundaryOptions {
   /// fit_to_outer_samples. The samples never reach the true boundary: measured mean offset of
   /// the curve from it -0.78..-0.87 s on the centre line (clean clouds, 10k and 50k), and
   /// about -0.4 s once fitted to the outermost samples (see the detection tests' printout).
-  /// The default 0 keeps the curve on the samples, as METHOD 3.3(d) asks.
+  /// The default 0 keeps the curve on the samples (docs/method.md §6.5).
   double outward_offset = 0.0;
 };
 

@@ -1,5 +1,5 @@
 // From the envelope back to M: the medial sheet of the envelope samples as a clean
-// 2-manifold triangle mesh with boundary (METHOD.md §5 c1).
+// 2-manifold triangle mesh with boundary (docs/method.md §8).
 #pragma once
 
 #include "envcrust/envelope.h"
@@ -20,7 +20,7 @@ inline constexpr double kTwistMinLoopRelRho = 4.0 * std::numbers::pi;
 /// Options of extract_sheet.
 struct SheetOptions {
   /// A Delaunay edge pq of the envelope samples crosses the shell when the angle between the
-  /// offset directions u_p and u_q is at least this (METHOD.md §5 c1: 100 degrees; three
+  /// offset directions u_p and u_q is at least this (docs/method.md §8.2: 100 degrees; three
   /// pairwise-selected rim edges cannot fit on a half-circle). Range (90, 180).
   double min_angle_deg = 100.0;
   /// Across a sharp fold of M (a crease bent by b > 80 degrees) the samples either side make
@@ -51,7 +51,7 @@ struct SheetOptions {
   /// (and at least the sample's distance to its 8th neighbour, for sparse input): the medial
   /// axis of the region M encloses (the inside of a scanned foot, >= R - rho away) otherwise
   /// stays attached to the sheet. The sheet itself lies within rho^2/64 of M inside and
-  /// overshoots the boundary by up to ~0.6 rho (METHOD.md §5 c1). >= 0; 0 disables.
+  /// overshoots the boundary by up to ~0.6 rho (docs/method.md §8.5). >= 0; 0 disables.
   double max_face_distance_rel_rho = 2.0;
   /// Components with less than this fraction of the total area are dropped.
   double min_component_area_fraction = 0.01;

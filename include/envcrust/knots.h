@@ -9,7 +9,7 @@
 
 namespace envcrust::knots {
 
-/// Knot types told apart (by the Alexander polynomial; see METHOD.md section 6). Unknown:
+/// Knot types told apart (by the Alexander polynomial; see docs/method.md §9.4). Unknown:
 /// every projection tried had more crossings than KnotOptions::max_crossings.
 enum class KnotType { Unknot, Trefoil, FigureEight, Other, Unknown };
 

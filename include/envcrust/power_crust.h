@@ -1,5 +1,5 @@
 // The Power Crust (Amenta, Choi, Kolluri 2001) on CGAL: poles, power diagram, inner/outer
-// labels, the crust surface and the power shape (METHOD.md section 4).
+// labels, the crust surface and the power shape (docs/method.md §7).
 #pragma once
 
 #include "envcrust/progress.h"
@@ -20,7 +20,7 @@ enum class PoleLabel : std::uint8_t { Unknown, In, Out };
 /// Marks "no pole" in index fields (a Delaunay cell that is no sample's pole).
 inline constexpr Index kNoPole = std::numeric_limits<Index>::max();
 
-/// Threshold presets of the labeling (METHOD.md 4.7): the values the original program runs
+/// Threshold presets of the labeling (docs/method.md §7.6): the values the original program runs
 /// with (`Code`: theta 0, theta2 0, no -R) or the ones its README claims (`Readme`: 0.4 / 0.3,
 /// sampling_estimate 0.6).
 enum class LabelPreset { Code, Readme };
@@ -29,7 +29,7 @@ enum class LabelPreset { Code, Readme };
 /// resolve_unknown is on (the original leaves Unknown poles, which can open the crust).
 struct PowerCrustOptions {
   /// Half-width of the bounding cube of the 8 extra points, in units of the largest extent
-  /// of the input's bounding box (METHOD 4.2). Range (1, 1000]: farther corners make the
+  /// of the input's bounding box (docs/method.md §7.2). Range (1, 1000]: farther corners make the
   /// poles of the hull samples so large that their power tests lose the input's detail (at
   /// 1e12 a sphere's crust passed through itself).
   double bounding_box_scale = 4.0;
@@ -159,7 +159,7 @@ struct PowerCrustResult {
   std::vector<Index> input_to_sample;      ///< for each input point, its sample
   std::vector<SamplePoles> sample_poles;   ///< per sample
   std::vector<Pole> poles;
-  std::array<Point3, 8> bounding_points{}; ///< corners of the bounding cube (METHOD 4.2)
+  std::array<Point3, 8> bounding_points{}; ///< corners of the bounding cube (docs/method.md §7.2)
   std::vector<DelaunayCell> delaunay_cells;///< when options.keep_delaunay_cells, sorted by vertices
   /// The crust (when built): fan-triangulated power faces between In and Out cells, outward
   /// oriented. One vertex per power-diagram vertex (regular-triangulation cell): each sample

@@ -1,5 +1,5 @@
 // Topology of an indexed triangle mesh: manifoldness, components, Euler characteristic,
-// orientability, genus and boundary loops (METHOD.md section 6).
+// orientability, genus and boundary loops (docs/method.md §9.1-9.2).
 #pragma once
 
 #include "envcrust/types.h"

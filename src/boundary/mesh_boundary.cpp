@@ -106,7 +106,7 @@ Vector3 conormal_for(const Vector3& d, const Vector3& normal, const Vector3& in)
 BoundaryCurve frame_loop(const TriangleMesh& mesh, const std::vector<Vector3>& normal_lines,
                          const std::vector<BoundaryEdge>& loop) {
   const std::size_t m = loop.size();
-  constexpr double corner_turn_deg = 30.0;  // METHOD section 1: a corner turns by > 30 degrees
+  constexpr double corner_turn_deg = 30.0;  // docs/method.md §3.2: a corner turns by > 30 degrees
   const double corner_cos = std::cos(corner_turn_deg * std::numbers::pi / 180.0);
   BoundaryCurve curve;
   curve.vertices.resize(m);

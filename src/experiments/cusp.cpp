@@ -1,6 +1,6 @@
 // Figure 8: the non-C2 cap y = |x|^(3/2): where the envelope's artifacts appear. The envelope
 // stops being C^{1,1} where a principal radius (2/3) sqrt(r) falls below rho, i.e. within
-// r < 2.25 rho^2 of the apex (METHOD.md §1); the error is measured per distance to the apex,
+// r < 2.25 rho^2 of the apex (docs/method.md §3.1); the error is measured per distance to the apex,
 // and the close-ups are coloured by it.
 #include <algorithm>
 #include <cmath>
@@ -104,7 +104,7 @@ ExperimentResult run_cusp(const ExperimentOptions& options) {
   figure.title = "Cusp apex close-ups (d < 0.3) at increasing ρ, " + std::string(scale) + "; horn for comparison";
   out.notes.push_back(
       "d: distance of a vertex of the result from the apex; ρ/32 is twice the sheet error bound "
-      "of METHOD.md F4, so an error beyond it is an artifact");
+      "of docs/method.md §2.4, so an error beyond it is an artifact");
 
   // The horn the paper printed (y = x^(-3/2) revolved) is smooth: no apex, no artifact.
   step(options, "cusp", static_cast<double>(rhos.size()) / (rhos.size() + 1));

@@ -10,7 +10,7 @@ namespace envcrust::experiments::detail {
 namespace {
 
 // The envelope's generating pieces at the tessellation's vertices: sheet offsets p +- rho n
-// and, at boundary vertices, half-circles b + rho (cos t n + sin t c) (METHOD.md F1).
+// and, at boundary vertices, half-circles b + rho (cos t n + sin t c) (docs/method.md §2.1).
 std::vector<Point3> offset_points(const TriangleMesh& grid, const std::vector<BoundaryCurve>& boundary, double rho) {
   std::vector<Point3> points;
   const auto normals = normals::mesh_vertex_normal_lines(grid);

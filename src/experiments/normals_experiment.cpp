@@ -1,5 +1,5 @@
 // Figure 9: exact normals rotated by a random angle (everywhere, or on the boundary curves
-// only); quality of the envelope reconstruction against the angle. METHOD.md F5 predicts that
+// only); quality of the envelope reconstruction against the angle. docs/method.md §2.5 predicts that
 // interior errors cost little (rho delta^2 / 2) and tilted rims most (a seam of rho delta).
 #include <algorithm>
 #include <cmath>

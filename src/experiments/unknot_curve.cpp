@@ -2,7 +2,7 @@
 // figure-eight knot ((2 + cos 2t) cos 3t, (2 + cos 2t) sin 3t, sin 4t) has a crossing at
 // t = pi/6 over t = 5pi/6 with height gap sqrt 3; a narrow bump z += 2.6 exp(-((t - 5pi/6) /
 // 0.02)^2) switches it and makes the curve an unknot. A polyline whose vertices miss the
-// bump keeps the figure-eight (METHOD.md §7).
+// bump keeps the figure-eight (docs/method.md §10.5).
 #include <cmath>
 #include <numbers>
 #include <random>

@@ -2,8 +2,8 @@
 // envelope spacing h0 = 0.08 R (R the estimated reach), as the paper kept its envelope
 // sampling: too small a lambda fails by density (h0 / lambda beyond what the Power Crust and
 // the extraction resolve), lambda >= R by the envelope folding onto itself; the theory's
-// bound is lambda < R (METHOD.md §2, §7), and the density bound of the extraction
-// h <= 0.33 lambda (METHOD.md §3.2) puts the lower end at about 3 h0.
+// bound is lambda < R (docs/method.md §4, §10.6), and the density bound of the extraction
+// h <= 0.33 lambda (docs/method.md §5.2) puts the lower end at about 3 h0.
 #include "experiment_list.h"
 #include "trial.h"
 

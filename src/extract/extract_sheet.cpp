@@ -1,4 +1,4 @@
-// extract_sheet: raw Voronoi sheet, triangles, cleaning, projection (METHOD.md §5 c1).
+// extract_sheet: raw Voronoi sheet, triangles, cleaning, projection (docs/method.md §8).
 #include "envcrust/errors.h"
 #include "envcrust/extract.h"
 

@@ -1,5 +1,5 @@
 // Cleaning the raw sheet into a 2-manifold: non-manifold edges, pinched vertices, outer
-// pieces and crumbs, holes below the envelope's resolution (METHOD.md §5 c1 step 4).
+// pieces and crumbs, holes below the envelope's resolution (docs/method.md §8.4).
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh_graph.h"

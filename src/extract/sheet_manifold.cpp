@@ -1,5 +1,5 @@
 // The sheet's last cleaning step: make the mesh a 2-manifold as the analyzer sees it (vertices
-// welded by position), or drop the faces where it cannot (METHOD.md §5 c1 step 4).
+// welded by position), or drop the faces where it cannot (docs/method.md §8.4).
 #include "sheet_mesh.h"
 
 #include "envcrust/mesh.h"

@@ -21,7 +21,7 @@ ProjectionStats project_onto_samples(TaggedMesh& tagged, const envelope::Surface
 
 /// Cut away what lies beyond the boundary curves: the level (x - b) . c, b the nearest point of
 /// a boundary curve (within `reach`) and c its outward conormal, is trimmed at zero. The
-/// sheet overshoots the boundary by up to ~0.6 rho into the rim tube (METHOD.md §5 c1).
+/// sheet overshoots the boundary by up to ~0.6 rho into the rim tube (docs/method.md §8.5).
 /// Returns the number of faces removed (net).
 std::size_t trim_beyond_boundary(TaggedMesh& tagged, const envelope::SurfaceSamples& surface,
                                  double reach);

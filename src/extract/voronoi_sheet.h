@@ -32,7 +32,7 @@ struct FoldPairs {
 /// the edges whose offset directions make at least `min_angle_deg`, and the fold pairs. A
 /// cell's vertex is the mean of the midpoints of its selected edges: the midpoint of a
 /// crossing edge lies on M to first order, while circumcentres of slivers are thrown far off
-/// (METHOD.md §5 c1 probe).
+/// (docs/method.md §8.3).
 RawSheet voronoi_sheet(const envelope::EnvelopeSamples& envelope, double min_angle_deg, const FoldPairs& folds = {});
 
 }  // namespace envcrust::extract

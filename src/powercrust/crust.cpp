@@ -1,5 +1,5 @@
 // The crust: power faces between In and Out cells, vertices keyed by cell, oriented by the
-// circulation around each In-Out edge, fan-triangulated (METHOD 4.8).
+// circulation around each In-Out edge, fan-triangulated (docs/method.md §7.7).
 #include "incident_cells.h"
 #include "robust_centres.h"
 #include "stages.h"

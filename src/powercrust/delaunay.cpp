@@ -1,4 +1,4 @@
-// Bounding points and the parallel Delaunay triangulation of the samples (METHOD 4.2-4.3).
+// Bounding points and the parallel Delaunay triangulation of the samples (docs/method.md §7.2-7.3).
 #include "delaunay.h"
 
 #include <CGAL/Spatial_lock_grid_3.h>
@@ -14,7 +14,7 @@ std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double
   const CGAL::Bbox_3 box = CGAL::bbox_3(samples.begin(), samples.end());
   const double extent = std::max({box.xmax() - box.xmin(), box.ymax() - box.ymin(),
                                   box.zmax() - box.zmin()});
-  // Centred at the box midpoint ([pc] uses half the extent, which misses data far from the
+  // Centred at the box midpoint (the original program uses half the extent, which misses data far from the
   // origin).
   const double cx = 0.5 * (box.xmin() + box.xmax());
   const double cy = 0.5 * (box.ymin() + box.ymax());

@@ -26,7 +26,7 @@ using DtTds = CGAL::Triangulation_data_structure_3<DtVertexBase, DtCellBase, CGA
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, DtTds>;
 
 /// The 8 corners of the cube centred at the samples' bbox midpoint with half-width
-/// `scale` times the largest extent (METHOD 4.2).
+/// `scale` times the largest extent (docs/method.md §7.2).
 std::array<Point3, 8> bounding_points(const std::vector<Point3>& samples, double scale);
 
 /// Delaunay triangulation of samples and corners (range insertion, parallel when `parallel`).

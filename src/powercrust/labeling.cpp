@@ -1,5 +1,5 @@
-// Inner/outer labels of the poles: the priority-queue propagation of [pc] label.c and its
-// second pass (METHOD 4.7).
+// Inner/outer labels of the poles: the priority-queue propagation of the original program's labeling and its
+// second pass (docs/method.md §7.6).
 #include "stages.h"
 
 #include <algorithm>
@@ -122,7 +122,7 @@ class Labeler {
     while (!heap_.empty()) {
       const Index p = heap_.pop();
       poles_[p].label = in_[p] > out_[p] ? PoleLabel::In : PoleLabel::Out;
-      if (in_[p] == out_[p]) continue;  // [pc] propagates nothing from a tie
+      if (in_[p] == out_[p]) continue;  // the original propagates nothing from a tie
       const bool inside = in_[p] > out_[p];
       for (std::size_t k = opposite_.offsets[p]; k < opposite_.offsets[p + 1]; ++k) {
         const Index q = opposite_.poles[k];
@@ -178,7 +178,7 @@ PoleLabel opposite_label(const std::vector<Pole>& poles, const OppositeLists& o,
   return common;
 }
 
-// [pc] label_unlabeled: decide from the most deeply intersecting In and Out neighbours and
+// as the original's second pass: decide from the most deeply intersecting In and Out neighbours and
 // the opposite poles. Labels set here are seen by later poles of the same pass.
 void second_pass(std::vector<Pole>& poles, const OppositeLists& o, const PoleGraph& g, double deep) {
   for (std::size_t p = 0; p < poles.size(); ++p) {

@@ -1,4 +1,4 @@
-// Voronoi vertices and poles of the samples, with welding and opposite-pole weights (METHOD 4.4-4.5).
+// Voronoi vertices and poles of the samples, with welding and opposite-pole weights (docs/method.md §7.4).
 #include "incident_cells.h"
 #include "robust_centres.h"
 #include "stages.h"
@@ -131,7 +131,7 @@ class SampleLocks {
   std::vector<std::atomic<bool>> flags_;
 };
 
-// p+ and p- of every sample (METHOD 4.5), indexed by sample id, in two passes over the cells:
+// p+ and p- of every sample (docs/method.md §7.4), indexed by sample id, in two passes over the cells:
 // p+ is the cell of largest circumradius among a sample's cells, p- the largest on the far
 // side of p+. Each circumcentre is computed once per pass: storing them (24 bytes x 20 cells
 // per sample on an exact torus) was the stage's peak memory, and collecting each sample's
@@ -353,7 +353,7 @@ PoleStage compute_poles(std::unique_ptr<Delaunay> dt, const std::vector<Point3>&
   }
   if (local_spacing) out.local_spacing = median_neighbour_spacing(*dt, nearest);
   // The triangulation is the largest object of the run: free it as soon as the poles are
-  // chosen (the power diagram comes next, and the two are never held together, METHOD 4.11).
+  // chosen (the power diagram comes next, and the two are never held together, docs/method.md §7.10).
   // What follows needs the centres and the cells' addresses only.
   if (!keep_cells) dt.reset();
   const std::vector<std::size_t> order = spatial_order(samples);

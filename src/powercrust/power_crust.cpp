@@ -98,7 +98,7 @@ PowerCrustResult power_crust(const std::vector<Point3>& points, const PowerCrust
     stats.seconds_delaunay = clock.lap("delaunay");
     clock.begin("poles");
     // compute_poles frees the DT, the largest object besides the RT: the two are never held
-    // together (METHOD 4.11).
+    // together (docs/method.md §7.10).
     PoleStage poles = compute_poles(std::move(dt), result.samples, options.keep_delaunay_cells,
                                      options.min_pole_radius_rel_spacing > 0, thresholds.sampling_estimate);
     result.poles = std::move(poles.poles);

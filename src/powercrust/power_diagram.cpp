@@ -1,4 +1,4 @@
-// The power diagram of the weighted poles (regular triangulation) and its pole graph (METHOD 4.6).
+// The power diagram of the weighted poles (regular triangulation) and its pole graph (docs/method.md §7.5).
 #include "power_diagram.h"
 
 #include "incident_cells.h"

@@ -1,4 +1,4 @@
-// The power shape: regular-triangulation simplices whose vertices are all In poles (METHOD 4.9).
+// The power shape: regular-triangulation simplices whose vertices are all In poles (docs/method.md §7.8).
 #include "incident_cells.h"
 #include "stages.h"
 

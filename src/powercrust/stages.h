@@ -1,4 +1,4 @@
-// The stages of power_crust and the intermediate results they pass on (METHOD 4.1-4.9).
+// The stages of power_crust and the intermediate results they pass on (docs/method.md §7).
 #pragma once
 
 #include "delaunay.h"
@@ -29,7 +29,7 @@ Thresholds check_options(const PowerCrustOptions& options);
 /// @throws DegenerateInput.
 void check_dimension(const std::vector<Point3>& samples);
 
-/// Poles of the samples, read from the Delaunay triangulation (METHOD 4.4-4.5).
+/// Poles of the samples, read from the Delaunay triangulation (docs/method.md §7.4).
 struct PoleStage {
   std::vector<Pole> poles;
   std::vector<SamplePoles> sample_poles;
@@ -56,7 +56,7 @@ struct LabelingReport {
   std::size_t resolved = 0;
 };
 
-/// The priority-queue labeling of [pc] label.c with its second pass (METHOD 4.7).
+/// The priority-queue labeling of the original program, with its second pass (docs/method.md §7.6).
 /// Poles flagged in `deferred` (empty: none) are not labeled by the priority queue, only by
 /// the second pass and the fallback.
 LabelingReport label_poles(std::vector<Pole>& poles, const std::vector<SamplePoles>& sample_poles,
@@ -64,7 +64,7 @@ LabelingReport label_poles(std::vector<Pole>& poles, const std::vector<SamplePol
                            const CGAL::Bbox_3& sample_bbox, bool resolve_unknown,
                            const std::vector<bool>& deferred = {});
 
-/// The crust and where each triangle came from (METHOD 4.8).
+/// The crust and where each triangle came from (docs/method.md §7.7).
 struct CrustStage {
   TriangleMesh mesh;
   std::vector<std::array<Index, 2>> face_poles;
@@ -76,7 +76,7 @@ struct CrustStage {
 /// Power faces between In and Out cells, welded, oriented In -> Out, fan-triangulated.
 CrustStage extract_crust(const PowerDiagram& diagram, const std::vector<Pole>& poles);
 
-/// Regular-triangulation simplices among In poles, deduplicated and sorted (METHOD 4.9).
+/// Regular-triangulation simplices among In poles, deduplicated and sorted (docs/method.md §7.8).
 PowerShape extract_power_shape(const PowerDiagram& diagram, const std::vector<Pole>& poles);
 
 }  // namespace envcrust::powercrust

@@ -30,7 +30,7 @@ inline Point3 figure_eight(double t) {
   return {r * std::cos(3 * t), r * std::sin(3 * t), std::sin(4 * t)};
 }
 
-/// The figure-eight with METHOD section 7's bump, which switches its crossing at t = 5 pi / 6.
+/// The figure-eight with the bump of docs/method.md §10.5, which switches its crossing at t = 5 pi / 6.
 inline Point3 bumped_figure_eight(double t) {
   const Point3 p = figure_eight(t);
   const double u = (t - 5 * std::numbers::pi / 6) / 0.02;

@@ -160,7 +160,7 @@ TEST(PowerCrustCrust, open_cylinder_is_closed_off_by_the_direct_power_crust) {
   const auto t = test_support::crust_topology(result.crust);
   std::printf("[ measured ] open cylinder 10k noise 0.001: chi %ld, boundary loops %zu, components %zu, manifold %d\n",
               t.euler_characteristic, t.boundary_loops.size(), t.components.size(), t.is_manifold() ? 1 : 0);
-  // The Power Crust always bounds a solid: the two rims get capped (METHOD 7, Figs 3-4).
+  // The Power Crust always bounds a solid: the two rims get capped (docs/method.md §10.2, the paper's Figs 3-4).
   EXPECT_TRUE(t.is_closed());
   EXPECT_EQ(t.boundary_loops.size(), 0u);
   EXPECT_EQ(t.misoriented_edges, 0u);
