@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reconstruct the smooth built-in surfaces from noisy samples and print a table (issue #5 bar:
+"""Reconstruct the smooth built-in surfaces from noisy samples and print a table (the bar:
 right topology and mesh->truth <= 0.5% of the diagonal). Distances in % of the diagonal; bnd =
 worst true boundary loop to its reconstructed loop; seconds are wall clock.
 

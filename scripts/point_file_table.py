@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reconstruct point files of the open built-in surfaces (normals estimated, boundary detected)
-and compare with what the samples allow (the issue #5 bars as the brief reads them): mesh->truth
+and compare with what the samples allow (the accuracy bars): mesh->truth
 <= 0.5% of the diagonal, truth->mesh <= max(0.5%, 1.1 x gap), gap = the largest distance from the
 true boundary to the nearest input point (JSON analysis.reference_boundary_gap). Distances in % of
 the diagonal; "ok" when both bars hold and the topology is the surface's.

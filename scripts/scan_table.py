@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Re-measure the README's real-scan rows (../shared/data, not in the repository).
+"""Re-measure the real-scan rows of docs/real-scans.md (the scan data is not in the repository;
+--data names its folder).
 
 Runs `envcrust reconstruct` on each scan with the row's flags, one after another, and prints
 one Markdown row per scan: rho, chi, loops, pieces and their genus, both distances (% of the
 reference's diagonal), crossings (found -> relaxed / cut -> left), wall time and peak memory.
 
-    scripts/scan_table.py [--binary build/envcrust] [--data ../shared/data] [NAME ...]
+    scripts/scan_table.py [--binary build/envcrust] [--data DATA] [NAME ...]
 
 NAME picks rows (foot, foot-width, foot-mesh, bunny, bunny-adaptive, lion, lion-mesh, bun000,
 bun045, dragon, face, face-mesh, b9, b9-keep); none = all but face-mesh (5 min, 5.6 GB).
