@@ -1,0 +1,536 @@
+#!/usr/bin/env python3
+"""The real-shapes development set (issue 45): envcrust and CGAL's advancing front, side by side.
+
+For every input (points sampled from a real mesh, its vertices, or a scan), runs
+`envcrust reconstruct POINTS -o out.ply --json` with the defaults, as a new user would, and
+`afsr_peer POINTS -o out.ply` (bench/afsr_peer.cpp: CGAL's advancing-front reconstruction)
+on the same points, then measures both outputs against the truth mesh with
+`envcrust analyze OUT --reference TRUTH --json --no-knots`. Prints one Markdown row per input
+and writes every measurement to --out (rewritten after each row, so a long run can be
+watched, stopped and resumed with --resume).
+
+    scripts/realshape_table.py [--data DIR] [--scans DIR] [--shapes a,b,...] [--variants v,...]
+                               [--timeout 600] [--jobs 1] [--out results.json] [--resume]
+
+Inputs, named SHAPE/VARIANT:
+  SHAPE: a mesh of CGAL's example data (data/meshes/SHAPE.off; the list is OPEN + CLOSED
+         below), or scan:NAME, a scan of ../shared/data with its own mesh as truth (SCANS below),
+         or builtin:NAME, a built-in surface with its fine tessellation as truth (BUILTINS; not
+         in the default set: --shapes builtins; no verts variant).
+         --shapes also takes the groups open, closed, scans, builtins.
+  VARIANT (mesh shapes only; scans are their own points, variant `points`):
+    s30k       30,000 points, uniform by area (seeded by the shape's name: same points each run);
+    verts      the mesh's vertices (those on a face);
+    ramp20     30,000 points whose density grows 20-fold along the mesh's longest box axis
+               (rejection from the uniform sampler: kept with probability 20^(t-1), t in [0, 1]);
+    noise0.5, noise1
+               the s30k points moved by Gaussian noise of sigma 0.5% / 1% of the mesh's
+               box diagonal (each coordinate).
+  s30k and verts run on every shape, ramp20 and noise on VARIANT_SHAPES (--variants picks).
+
+The data: CGAL's example data is not in the repository and must not be committed. Found
+through --data or the environment variable ENVCRUST_CGAL_DATA (the folder holding `meshes/`);
+when absent the script prints the commands that unpack it from Debian's libcgal-demo.
+The scans: --scans or ENVCRUST_SHARED_DATA, default ../shared/data beside the repository.
+
+Topology "right": the output's Euler characteristic, boundary loop count, orientability and
+number of pieces all equal the truth mesh's (as `envcrust analyze` reads both). Distances are
+the largest distance output->truth and truth->output, in % of the truth's box diagonal. Time
+is the wall clock of the whole command (envcrust's includes reading, normals, its own analysis
+against the input points, and writing; afsr_peer's reading and writing); peak is the largest
+resident size of the process (/usr/bin/time for envcrust, afsr_peer's own VmHWM). The raw
+sheet's defects are envcrust's report counts before its repairs: orientation seams, balls
+where the sheet is not a disc (the handle cut's balls), and face pairs that cross (found
+before relaxation and cuts); "(adaptive)" or "(power crust)" after them says which of
+envcrust's runs was kept (the counts are those of the sheet it reports).
+"""
+import argparse
+import bisect
+import json
+import math
+import os
+import random
+import signal
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import zlib
+from concurrent.futures import ThreadPoolExecutor
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+OPEN = ["head", "holes", "mushroom", "horizons", "lion", "pig", "nefertiti", "cylinder_locally_refined",
+        "patch-01", "mask_cone"]
+CLOSED = ["armadillo", "bunny00", "camel", "elephant", "femur", "knot1", "fandisk", "rotor_small", "turbine",
+          "man", "triceratops", "bear"]
+# scan name: (points, truth mesh), under --scans
+SCANS = {
+    "foot": ("foot_vhacd/points.xyz", "foot_vhacd/foot_open.off"),
+    "lion-head": ("cgal_lion_head/points.xyz", "cgal_lion_head/lion-head.off"),
+    "face": ("face_yh_scan_vhacd/points.xyz", "face_yh_scan_vhacd/face-YH.off"),
+    "bunny": ("stanford_bunny_zipper/points.xyz", "stanford_bunny_zipper/bun_zipper.ply"),
+}
+MESH_VARIANTS = ["s30k", "verts", "ramp20", "noise0.5", "noise1"]
+VARIANT_SHAPES = ["head", "mushroom", "pig", "bunny00", "knot1", "fandisk"]
+# built-in surfaces (not in the default set: --shapes builtins), truth = `envcrust sample NAME --mesh`
+BUILTINS = ["trefoil-ribbon", "moebius", "hemisphere", "torus", "cylinder", "saddle"]
+SAMPLES = 30000
+RAMP = 20.0
+
+GET_DATA = """CGAL's example data was not found. It comes from Debian's libcgal-demo (never commit it):
+    apt-get download libcgal-demo
+    dpkg-deb -x libcgal-demo_*_all.deb cgal-demo
+    mkdir -p cgal-demo/data && tar -xzf cgal-demo/usr/share/doc/libcgal-dev/data.tar.gz -C cgal-demo/data
+    export ENVCRUST_CGAL_DATA=$PWD/cgal-demo/data/data     # the folder that holds meshes/
+then run this script again (or pass --data cgal-demo/data/data)."""
+
+
+# ---------------------------------------------------------------------------------------------
+# Meshes and sampling (plain standard library: no numpy here)
+
+def read_off(path):
+    """Vertices and triangles (polygons fanned) of an OFF file; comments and colours ignored."""
+    with open(path) as f:
+        tokens = []
+        for line in f:
+            line = line.split("#", 1)[0].split()
+            if line:
+                tokens.append(line)
+    head = tokens[0]
+    if not head[0].upper().endswith("OFF"):
+        raise ValueError(f"{path}: not an OFF file")
+    rest = head[1:] if len(head) > 1 else None
+    lines = tokens[1:]
+    if rest is None:
+        rest, lines = lines[0], lines[1:]
+    nv, nf = int(rest[0]), int(rest[1])
+    vertices = [tuple(float(x) for x in lines[i][:3]) for i in range(nv)]
+    triangles = []
+    for line in lines[nv:nv + nf]:
+        n = int(line[0])
+        ids = [int(x) for x in line[1:1 + n]]
+        for k in range(1, n - 1):
+            triangles.append((ids[0], ids[k], ids[k + 1]))
+    return vertices, triangles
+
+
+def area(a, b, c):
+    u = (b[0] - a[0], b[1] - a[1], b[2] - a[2])
+    v = (c[0] - a[0], c[1] - a[1], c[2] - a[2])
+    x, y, z = u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]
+    return 0.5 * math.sqrt(x * x + y * y + z * z)
+
+
+def box(points):
+    lo = [min(p[i] for p in points) for i in range(3)]
+    hi = [max(p[i] for p in points) for i in range(3)]
+    return lo, hi
+
+
+def sample_mesh(vertices, triangles, count, seed, ramp=None, noise=0.0):
+    """count points uniform by area (triangle by area, then uniform in it); with ramp = R the
+    density grows R-fold along the box's longest axis (rejection); noise = Gaussian sigma as a
+    fraction of the box diagonal."""
+    rng = random.Random(seed)
+    cumulative, total = [], 0.0
+    for t in triangles:
+        total += area(vertices[t[0]], vertices[t[1]], vertices[t[2]])
+        cumulative.append(total)
+    lo, hi = box([vertices[i] for t in triangles for i in t])
+    axis = max(range(3), key=lambda i: hi[i] - lo[i])
+    diagonal = math.dist(lo, hi)
+    points = []
+    while len(points) < count:
+        t = triangles[min(bisect.bisect_left(cumulative, rng.random() * total), len(triangles) - 1)]
+        a, b, c = vertices[t[0]], vertices[t[1]], vertices[t[2]]
+        r1, r2 = math.sqrt(rng.random()), rng.random()
+        p = tuple((1 - r1) * a[i] + r1 * (1 - r2) * b[i] + r1 * r2 * c[i] for i in range(3))
+        if ramp is not None:
+            s = (p[axis] - lo[axis]) / (hi[axis] - lo[axis])
+            if rng.random() >= ramp ** (s - 1):
+                continue
+        points.append(p)
+    if noise > 0:
+        sigma = noise * diagonal
+        points = [tuple(x + rng.gauss(0, sigma) for x in p) for p in points]
+    return points
+
+
+def write_xyz(path, points):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        for p in points:
+            f.write(f"{p[0]:.9g} {p[1]:.9g} {p[2]:.9g}\n")
+    os.replace(tmp, path)
+
+
+def without_repeated_faces(truth, args):
+    """truth, or a copy of it in --work without its repeated triangles (the face scan's mesh
+    repeats 18, which make it read as non-manifold)."""
+    if not truth.endswith(".off"):
+        return truth
+    clean = os.path.join(args.work, "truth", os.path.basename(truth)[:-4] + ".unique.off")
+    if os.path.exists(clean):
+        return clean
+    vertices, triangles = read_off(truth)
+    seen, unique = set(), []
+    for t in triangles:
+        if tuple(sorted(t)) not in seen:
+            seen.add(tuple(sorted(t)))
+            unique.append(t)
+    if len(unique) == len(triangles):
+        return truth
+    os.makedirs(os.path.dirname(clean), exist_ok=True)
+    with open(clean + ".tmp", "w") as f:
+        f.write(f"OFF\n{len(vertices)} {len(unique)} 0\n")
+        f.writelines(f"{v[0]!r} {v[1]!r} {v[2]!r}\n" for v in vertices)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in unique)
+    os.replace(clean + ".tmp", clean)
+    return clean
+
+
+def make_input(name, args):
+    """(points file, truth mesh) of input SHAPE/VARIANT, writing the points file if need be."""
+    shape, variant = name.split("/")
+    if shape.startswith("scan:"):
+        points, truth = SCANS[shape[5:]]
+        return os.path.join(args.scans, points), without_repeated_faces(os.path.join(args.scans, truth), args)
+    if shape.startswith("builtin:"):
+        truth = os.path.join(args.work, "truth", shape[8:] + ".off")
+        if not os.path.exists(truth):
+            os.makedirs(os.path.dirname(truth), exist_ok=True)
+            subprocess.run([args.envcrust, "sample", shape[8:], "--mesh", "-o", truth, "--quiet"], check=True)
+    else:
+        truth = os.path.join(args.data, "meshes", shape + ".off")
+    path = os.path.join(args.work, "inputs", f"{shape.replace(':', '_')}.{variant}.xyz")
+    if os.path.exists(path):
+        return path, truth
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    vertices, triangles = read_off(truth)
+    seed = zlib.crc32(shape.encode())  # fixed per shape; the variants share the uniform draw
+    if variant == "verts":
+        used = sorted({i for t in triangles for i in t})
+        points = [vertices[i] for i in used]
+    elif variant == "s30k":
+        points = sample_mesh(vertices, triangles, SAMPLES, seed)
+    elif variant == "ramp20":
+        points = sample_mesh(vertices, triangles, SAMPLES, seed, ramp=RAMP)
+    elif variant.startswith("noise"):
+        points = sample_mesh(vertices, triangles, SAMPLES, seed, noise=float(variant[5:]) / 100)
+    else:
+        raise ValueError(f"unknown variant {variant}")
+    write_xyz(path, points)
+    return path, truth
+
+
+# ---------------------------------------------------------------------------------------------
+# Runs
+
+def run(command, timeout):
+    """(return code or 'timeout', stdout, stderr, seconds, peak MB) of command under /usr/bin/time."""
+    start = time.monotonic()
+    process = subprocess.Popen(["/usr/bin/time", "-f", "PEAK_KB %M"] + command, stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        out, err = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        out, err = process.communicate()
+        return "timeout", out, err, time.monotonic() - start, None
+    seconds = time.monotonic() - start
+    peak, lines = None, []
+    for line in err.splitlines():
+        if line.startswith("PEAK_KB "):
+            peak = int(line.split()[1]) / 1024
+        elif not line.startswith("Command exited with non-zero status"):
+            lines.append(line)
+    return process.returncode, out, "\n".join(lines), seconds, peak
+
+
+def topology(analysis):
+    return {"chi": analysis["euler_characteristic"], "loops": analysis["boundary_loops"],
+            "orientable": analysis["is_orientable"], "pieces": analysis["components"]}
+
+
+def analyze(binary, mesh, truth, timeout):
+    command = [binary, "analyze", mesh, "--json", "--quiet", "--no-knots"]
+    if truth:
+        command += ["--reference", truth]
+    code, out, err, seconds, _ = run(command, timeout)
+    if code != 0:
+        return {"error": f"analyze {code}: {err.strip()[-300:]}"}
+    a = json.loads(out)
+    result = {"topology": topology(a), "vertices": a["vertices"], "faces": a["faces"],
+              "is_manifold": a["is_manifold"], "analyze_seconds": round(seconds, 2),
+              "genus": [c["genus"] for c in a["component_list"]]}
+    if "self_intersections" in a:
+        result["crossings"] = a["self_intersections"]["face_pairs"]
+    if "distance" in a:
+        d = a["distance"]
+        result["mesh_to_truth_pct"] = 100 * d["mesh_to_reference"]["max_rel_diag"]
+        result["truth_to_mesh_pct"] = 100 * d["reference_to_mesh"]["max_rel_diag"]
+        result["mesh_to_truth_mean_pct"] = 100 * d["mesh_to_reference"]["mean_rel_diag"]
+        result["truth_to_mesh_mean_pct"] = 100 * d["reference_to_mesh"]["mean_rel_diag"]
+    return result
+
+
+def truth_topology(binary, truth, args):
+    cache = os.path.join(args.work, "truth", os.path.basename(truth) + ".json")
+    if os.path.exists(cache):
+        with open(cache) as f:
+            return json.load(f)
+    code, out, err, _, _ = run([binary, "analyze", truth, "--json", "--quiet", "--no-knots",
+                                "--no-self-intersections"], args.timeout)
+    if code != 0:
+        return {"error": f"analyze {code}: {err.strip()[-300:]}"}
+    a = json.loads(out)
+    result = {"topology": topology(a), "vertices": a["vertices"], "is_manifold": a["is_manifold"],
+              "genus": [c["genus"] for c in a["component_list"]]}
+    os.makedirs(os.path.dirname(cache), exist_ok=True)
+    with open(cache, "w") as f:
+        json.dump(result, f)
+    return result
+
+
+def count_points(path):
+    with open(path) as f:
+        return sum(1 for line in f if line.strip() and not line.lstrip().startswith("#"))
+
+
+def run_envcrust(args, points, out_dir, truth_topo):
+    out = os.path.join(out_dir, "envcrust.ply")
+    code, stdout, err, seconds, peak = run([args.envcrust, "reconstruct", points, "-o", out, "--json",
+                                            "--quiet"], args.timeout)
+    result = {"seconds": round(seconds, 2), "peak_mb": peak and round(peak)}
+    if code == "timeout":
+        result["error"] = f"timeout after {args.timeout} s"
+        return result
+    if code != 0:
+        result["error"] = f"exit {code}: {err.strip()[-300:]}"
+        return result
+    j = json.loads(stdout)
+    s, e = j.get("sheet", {}), j.get("envelope", {})
+    result["stage_seconds"] = j.get("seconds")
+    result["rho"] = e.get("rho")
+    result["rho_min"] = e.get("rho_min")
+    result["envelope_samples"] = e.get("samples")
+    result["raw_sheet"] = {k: s.get(k) for k in ("orientation_seams", "handle_balls", "self_intersections_found",
+                                                  "self_intersections_left", "cut_holes_filled",
+                                                  "cut_notches_closed")}
+    result["kept"] = ("power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
+                      "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
+    result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
+    if not args.keep_meshes:
+        os.remove(out)
+    return result
+
+
+def run_afsr(args, points, out_dir, truth_topo):
+    out = os.path.join(out_dir, "afsr.ply")
+    code, stdout, err, seconds, peak = run([args.afsr, points, "-o", out], args.timeout)
+    result = {"seconds": round(seconds, 2), "peak_mb": peak and round(peak)}
+    if code == "timeout":
+        result["error"] = f"timeout after {args.timeout} s"
+        return result
+    if code != 0:
+        result["error"] = f"exit {code}: {err.strip()[-300:]}"
+        return result
+    j = json.loads(stdout)
+    result["seconds_reconstruction"] = j["seconds_reconstruction"]
+    # afsr_peer reads its peak (VmHWM) itself and resets it as it does (bench/peak_memory.h),
+    # which leaves /usr/bin/time the size after the reset: take the program's own figure.
+    result["peak_mb"] = round(j["peak_mb"])
+    if j["faces"] == 0:
+        result["error"] = "no faces"
+        return result
+    result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
+    if not args.keep_meshes:
+        os.remove(out)
+    return result
+
+
+def measure(name, args):
+    try:
+        points, truth = make_input(name, args)
+    except (OSError, ValueError) as error:
+        return {"input": name, "error": str(error)}
+    args.truth_of[points] = truth
+    row = {"input": name, "points_file": points, "truth": truth, "points": count_points(points),
+           "truth_analysis": truth_topology(args.envcrust, truth, args)}
+    out_dir = os.path.join(args.work, "out", name.replace("/", ".").replace(":", "_"))
+    os.makedirs(out_dir, exist_ok=True)
+    for tool, runner in (("afsr", run_afsr), ("envcrust", run_envcrust)):
+        row[tool] = runner(args, points, out_dir, row["truth_analysis"])
+        if "topology" in row[tool] and "topology" in row["truth_analysis"]:
+            row[tool]["topology_right"] = row[tool]["topology"] == row["truth_analysis"]["topology"]
+    return row
+
+
+# ---------------------------------------------------------------------------------------------
+# The table
+
+def topo_text(t):
+    return f"χ {t['chi']}, {t['loops']} loops, {'or.' if t['orientable'] else 'non-or.'}, {t['pieces']} pc"
+
+
+def pct(x):
+    return "–" if x is None else f"{x:.2f}%" if x < 10 else f"{x:.0f}%"
+
+
+def tool_cells(r, raw=False):
+    if r is None:
+        return ["not run"] + [""] * (7 if raw else 6)
+    if "error" in r:
+        cells = [f"**{r['error'][:80]}**", "✗", "", "", f"{r['seconds']:.1f}",
+                 "" if r.get("peak_mb") is None else f"{r['peak_mb']}", ""]
+        return cells + ([""] if raw else [])
+    cells = [topo_text(r["topology"]), "✓" if r.get("topology_right") else "✗",
+             pct(r.get("mesh_to_truth_pct")), pct(r.get("truth_to_mesh_pct")), f"{r['seconds']:.1f}",
+             f"{r['peak_mb']}", f"{r['vertices']:,}"]
+    if raw:
+        s = r.get("raw_sheet") or {}
+        defects = f"{s.get('orientation_seams')} / {s.get('handle_balls')} / {s.get('self_intersections_found')}"
+        if r.get("kept") != "uniform":
+            defects += f" ({r.get('kept')})"
+        cells.append(defects)
+    return cells
+
+
+HEADER = ("| input | points | truth | envcrust | ok | m→t | t→m | s | MB | verts | raw seams / balls / crossings "
+          "| AFSR | ok | m→t | t→m | s | MB | verts |")
+
+
+def row_text(row):
+    truth = row.get("truth_analysis", {})
+    truth_cell = topo_text(truth["topology"]) if "topology" in truth else truth.get("error", row.get("error", ""))
+    cells = [row["input"], f"{row.get('points', 0):,}", truth_cell] + tool_cells(row.get("envcrust"), raw=True) + \
+        tool_cells(row.get("afsr"))
+    return "| " + " | ".join(str(c) for c in cells) + " |"
+
+
+def summary(rows):
+    lines = []
+    for tool in ("envcrust", "afsr"):
+        done = [r for r in rows if r.get(tool)]
+        right = sum(1 for r in done if r[tool].get("topology_right"))
+        failed = sum(1 for r in done if "error" in r[tool])
+        lines.append(f"- {tool}: topology right on {right} of {len(done)} inputs ({failed} failed or timed out)")
+    ratios = [r["envcrust"]["seconds"] / r["afsr"]["seconds"] for r in rows
+              if r.get("envcrust") and r.get("afsr") and "error" not in r["envcrust"] and "error" not in r["afsr"]
+              and r["afsr"]["seconds"] > 0]
+    if ratios:
+        lines.append(f"- time envcrust / AFSR (wall clock, both finished): median {statistics.median(ratios):.0f}x "
+                     f"(range {min(ratios):.0f}–{max(ratios):.0f}x, {len(ratios)} inputs)")
+    for tool in ("envcrust", "afsr"):
+        v = [r[tool]["vertices"] / r["points"] for r in rows
+             if r.get(tool) and "vertices" in r[tool] and r.get("points")]
+        if v:
+            lines.append(f"- {tool} output vertices / input points: median {statistics.median(v):.2f} "
+                         f"(range {min(v):.2f}–{max(v):.2f})")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--data", default=os.environ.get("ENVCRUST_CGAL_DATA"),
+                        help="CGAL's example data, the folder holding meshes/ (env ENVCRUST_CGAL_DATA)")
+    parser.add_argument("--scans", default=os.environ.get("ENVCRUST_SHARED_DATA",
+                                                          os.path.join(REPO, "..", "shared", "data")),
+                        help="the shared scans (env ENVCRUST_SHARED_DATA; default ../shared/data)")
+    parser.add_argument("--envcrust", default=os.path.join(REPO, "build", "envcrust"))
+    parser.add_argument("--afsr", default=os.path.join(REPO, "build", "bench", "afsr_peer"))
+    parser.add_argument("--shapes", help="comma-separated shapes (mesh names, scan:NAME, or open/closed/scans); "
+                                         "default all")
+    parser.add_argument("--variants", help=f"comma-separated variants of {MESH_VARIANTS}; default s30k,verts "
+                                           f"on every shape and the others on {','.join(VARIANT_SHAPES)}")
+    parser.add_argument("--inputs", help="comma-separated SHAPE/VARIANT names, in this order (overrides the two above)")
+    parser.add_argument("--timeout", type=float, default=600, help="seconds per run (a timeout is a row)")
+    parser.add_argument("--jobs", type=int, default=1, help="inputs measured at once (1: timings undisturbed)")
+    parser.add_argument("--out", default="results.json", help="every measurement, rewritten after each row")
+    parser.add_argument("--work", default=os.path.join(REPO, "build", "realshapes"),
+                        help="sampled inputs, cached truth topology, outputs")
+    parser.add_argument("--resume", action="store_true", help="keep the rows already in --out, run the rest")
+    parser.add_argument("--keep-meshes", action="store_true", help="keep the output meshes in --work/out")
+    parser.add_argument("--list", action="store_true", help="list the inputs and stop")
+    parser.add_argument("--prepare", action="store_true", help="write the sampled inputs and stop")
+    args = parser.parse_args()
+    args.truth_of = {}
+
+    if args.inputs:
+        names = args.inputs.split(",")
+    else:
+        shapes = []
+        for s in (args.shapes.split(",") if args.shapes else ["open", "closed", "scans"]):
+            shapes += (OPEN if s == "open" else CLOSED if s == "closed" else
+                       [f"scan:{n}" for n in SCANS] if s == "scans" else
+                       [f"builtin:{n}" for n in BUILTINS] if s == "builtins" else [s])
+        variants = args.variants.split(",") if args.variants else None
+        names = []
+        for v in MESH_VARIANTS:  # the whole set of one variant before the next
+            for s in shapes:
+                if s.startswith("scan:"):
+                    continue
+                if s.startswith("builtin:") and v == "verts":
+                    continue
+                if variants is None and (v in ("s30k", "verts") or s in VARIANT_SHAPES) or variants and v in variants:
+                    names.append(f"{s}/{v}")
+            if v == "s30k":
+                names += [f"{s}/points" for s in shapes if s.startswith("scan:")]
+    if any(not n.startswith(("scan:", "builtin:")) for n in names) and \
+            (not args.data or not os.path.isdir(os.path.join(args.data, "meshes"))):
+        sys.exit(f"realshape_table.py: {args.data or 'no --data'}: no meshes/ folder\n{GET_DATA}")
+    for name in names:
+        shape, _, variant = name.partition("/")
+        known = (shape[5:] in SCANS and variant == "points") if shape.startswith("scan:") else \
+            (shape[8:] in BUILTINS and variant in MESH_VARIANTS and variant != "verts") \
+            if shape.startswith("builtin:") else \
+            variant in MESH_VARIANTS and os.path.exists(os.path.join(args.data, "meshes", shape + ".off"))
+        if not known:
+            sys.exit(f"realshape_table.py: unknown input {name} (shapes: {', '.join(OPEN + CLOSED)}, "
+                     f"scan:{', scan:'.join(SCANS)}; variants: {', '.join(MESH_VARIANTS)}, points for scans)")
+    if any(n.startswith("scan:") for n in names) and not os.path.isdir(args.scans):
+        sys.exit(f"realshape_table.py: {args.scans}: no such folder (the scans are not in the repository)")
+    if args.list or args.prepare:
+        for name in names:
+            print(name + ("\t" + "\t".join(make_input(name, args)) if args.prepare else ""))
+        return
+    for binary in (args.envcrust, args.afsr):
+        if not os.access(binary, os.X_OK):
+            sys.exit(f"realshape_table.py: {binary}: not built (cmake --build build --target envcrust afsr_peer)")
+
+    rows = {}
+    if args.resume and os.path.exists(args.out):
+        with open(args.out) as f:
+            rows = {r["input"]: r for r in json.load(f)["rows"]}
+    started = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    commit = subprocess.run(["git", "-C", REPO, "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip()
+
+    def save():
+        done = [rows[n] for n in names if n in rows]
+        tmp = args.out + ".tmp"
+        with open(tmp, "w") as f:
+            json.dump({"started": started, "commit": commit, "command": " ".join(sys.argv), "rows": done,
+                       "summary": summary(done)}, f, indent=1)
+        os.replace(tmp, args.out)
+
+    print(HEADER)
+    print("|" + "---|" * (HEADER.count("|") - 1))
+    todo = [n for n in names if n not in rows]
+    for n in names:
+        if n in rows:
+            print(row_text(rows[n]), flush=True)
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        for row in pool.map(lambda n: measure(n, args), todo):
+            rows[row["input"]] = row
+            save()
+            print(row_text(row), flush=True)
+    save()
+    print()
+    print("\n".join(summary([rows[n] for n in names if n in rows])))
+
+
+if __name__ == "__main__":
+    main()
