@@ -307,7 +307,11 @@ def run_envcrust(args, points, out_dir, truth_topo):
     if code == "timeout":
         result["error"] = f"timeout after {args.timeout} s"
         return result
-    if code != 0:
+    if code == 4 and os.path.exists(out) and stdout.strip():
+        # exit 4: the mesh is written, but fails envcrust's own checks (it says which): measured
+        # as it is, since a user gets it, and the message kept.
+        result["own_checks_failed"] = err.strip().splitlines()[-1][-300:] if err.strip() else "exit 4"
+    elif code != 0:
         result["error"] = f"exit {code}: {err.strip()[-300:]}"
         return result
     j = json.loads(stdout)
@@ -323,7 +327,7 @@ def run_envcrust(args, points, out_dir, truth_topo):
                       "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
     result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
     if not args.keep_meshes:
-        os.remove(out)
+        os.remove(out) if os.path.exists(out) else None
     return result
 
 
@@ -347,7 +351,7 @@ def run_afsr(args, points, out_dir, truth_topo):
         return result
     result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
     if not args.keep_meshes:
-        os.remove(out)
+        os.remove(out) if os.path.exists(out) else None
     return result
 
 
@@ -394,6 +398,8 @@ def tool_cells(r, raw=False):
         defects = f"{s.get('orientation_seams')} / {s.get('handle_balls')} / {s.get('self_intersections_found')}"
         if r.get("kept") != "uniform":
             defects += f" ({r.get('kept')})"
+        if r.get("own_checks_failed"):
+            defects += " [fails own checks: " + r["own_checks_failed"].split("fails its checks: ")[-1][:60] + "]"
         cells.append(defects)
     return cells
 
@@ -432,6 +438,23 @@ def summary(rows):
     return lines
 
 
+def group_of(name):
+    variant = name.split("/")[1]
+    return {"s30k": "30k samples", "points": "scans", "verts": "vertices", "ramp20": "density ramp"}.get(
+        variant, "noise")
+
+
+def summaries(rows):
+    """The summary of all rows, then of each group (30k samples, scans, vertices, ramp, noise)."""
+    lines = ["All inputs:"] + summary(rows)
+    groups = sorted({group_of(r["input"]) for r in rows})
+    if len(groups) > 1:
+        for g in ("30k samples", "scans", "vertices", "density ramp", "noise"):
+            if g in groups:
+                lines += ["", f"{g}:"] + summary([r for r in rows if group_of(r["input"]) == g])
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--data", default=os.environ.get("ENVCRUST_CGAL_DATA"),
@@ -455,6 +478,8 @@ def main():
     parser.add_argument("--keep-meshes", action="store_true", help="keep the output meshes in --work/out")
     parser.add_argument("--list", action="store_true", help="list the inputs and stop")
     parser.add_argument("--prepare", action="store_true", help="write the sampled inputs and stop")
+    parser.add_argument("--table", action="store_true", help="print the table of the rows in --out, run nothing")
+    parser.add_argument("--redo", help="comma-separated inputs to measure again with --resume")
     args = parser.parse_args()
     args.truth_of = {}
 
@@ -496,20 +521,32 @@ def main():
         for name in names:
             print(name + ("\t" + "\t".join(make_input(name, args)) if args.prepare else ""))
         return
-    for binary in (args.envcrust, args.afsr):
+    for binary in () if args.table else (args.envcrust, args.afsr):
         if not os.access(binary, os.X_OK):
             sys.exit(f"realshape_table.py: {binary}: not built (cmake --build build --target envcrust afsr_peer)")
 
     rows = {}
-    if args.resume and os.path.exists(args.out):
+    if (args.resume or args.table) and os.path.exists(args.out):
         with open(args.out) as f:
             rows = {r["input"]: r for r in json.load(f)["rows"]}
+        for name in (args.redo.split(",") if args.redo else []):
+            rows.pop(name, None)
+    if args.table:
+        print(HEADER)
+        print("|" + "---|" * (HEADER.count("|") - 1))
+        for n in names:
+            if n in rows:
+                print(row_text(rows[n]))
+        print()
+        print("\n".join(summaries([rows[n] for n in names if n in rows])))
+        return
     started = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     commit = subprocess.run(["git", "-C", REPO, "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True).stdout.strip()
 
     def save():
-        done = [rows[n] for n in names if n in rows]
+        # the rows of this run's inputs first, then those --resume found for other inputs
+        done = [rows[n] for n in names if n in rows] + [r for n, r in rows.items() if n not in names]
         tmp = args.out + ".tmp"
         with open(tmp, "w") as f:
             json.dump({"started": started, "commit": commit, "command": " ".join(sys.argv), "rows": done,
@@ -529,7 +566,7 @@ def main():
             print(row_text(row), flush=True)
     save()
     print()
-    print("\n".join(summary([rows[n] for n in names if n in rows])))
+    print("\n".join(summaries([rows[n] for n in names if n in rows])))
 
 
 if __name__ == "__main__":
