@@ -3,6 +3,7 @@
 
 #include "envcrust/io.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -14,6 +15,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -61,6 +63,39 @@ void check_distinct_outputs(const std::vector<std::pair<std::string, std::string
       if (other == resolved) throw UsageError(other_flag + " and " + flag + " name the same file '" + path + "'");
     seen.emplace_back(flag, resolved);
   }
+}
+
+void check_outputs_are_not_inputs(const std::vector<std::pair<std::string, std::string>>& inputs,
+                                  const std::vector<std::pair<std::string, std::string>>& outputs) {
+  // stat() follows symlinks: two spellings, a link and its target, or two hard links of one
+  // file all give one device and inode.
+  auto identity = [](const std::string& path) -> std::optional<std::pair<dev_t, ino_t>> {
+    struct stat info {};
+    if (path.empty() || ::stat(path.c_str(), &info) != 0) return std::nullopt;
+    return std::make_pair(info.st_dev, info.st_ino);
+  };
+  for (const auto& [out_flag, out_path] : outputs) {
+    const auto out_id = identity(out_path);
+    if (!out_id) continue;  // not written yet: no input can be it
+    for (const auto& [in_flag, in_path] : inputs)
+      if (identity(in_path) == out_id)
+        throw UsageError(out_flag + " '" + out_path + "' is the " + in_flag + " file '" + in_path +
+                         "' (the same file): writing it would replace the input; choose another output");
+  }
+}
+
+void add_threads_option(CLI::App& command, int& threads) {
+  command.add_option("--threads", threads, "Threads to run on (default: every core)")->check(whole_number_in(1, 4096));
+}
+
+std::unique_ptr<tbb::global_control> limit_threads(int threads) {
+  if (threads <= 0) return nullptr;
+  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                               static_cast<std::size_t>(threads));
+}
+
+int allowed_threads() {
+  return static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
 }
 
 void print_json(const nlohmann::json& document) { std::cout << json_text(document); }

@@ -7,8 +7,12 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
 
+#include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace envcrust::cli {
 
@@ -16,6 +20,7 @@ namespace envcrust::cli {
 struct CommonFlags {
   bool json = false;   ///< print the report as JSON on stdout
   bool quiet = false;  ///< no progress bar and no human-readable summary
+  int threads = 0;     ///< --threads (add_threads_option); 0: every core
 };
 
 /// Add --json and --quiet to a subcommand.
@@ -32,6 +37,23 @@ std::string json_text(const nlohmann::json& document);
 /// same file 'out.ply'"): the later one would silently replace the earlier. Pairs of (flag,
 /// path); empty paths are not written and skipped. @throws UsageError
 void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
+
+/// Refuses an output that is the same file as an input: the same device and inode, whatever
+/// the spelling (another path to it, a symlink, a hard link), since writing the output would
+/// replace the input ("-o 'b.xyz' is the input file 'a.xyz' (the same file): choose another
+/// output"). Pairs of (flag, path); inputs that are no file (builtin:NAME) and outputs that do
+/// not exist yet are skipped. @throws UsageError
+void check_outputs_are_not_inputs(const std::vector<std::pair<std::string, std::string>>& inputs,
+                                  const std::vector<std::pair<std::string, std::string>>& outputs);
+
+/// Add `--threads N` (N >= 1; unset: every core) to a heavy subcommand.
+void add_threads_option(CLI::App& command, int& threads);
+
+/// Limits oneTBB to `threads` workers while the result lives (0: no limit, every core).
+std::unique_ptr<tbb::global_control> limit_threads(int threads);
+
+/// The number of threads oneTBB may use now (what --threads set, else the cores).
+int allowed_threads();
 
 /// Print a JSON document on stdout (json_text).
 void print_json(const nlohmann::json& document);
@@ -85,6 +107,18 @@ auto naming_input(const std::string& spec, Stage&& stage) {
 
 /// Usage error raised by a subcommand after parsing (exit code 2, like CLI11's own errors).
 class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Exit code of a run that wrote its result, but the result fails its own checks (see
+/// ChecksFailed).
+inline constexpr int kExitChecksFailed = 4;
+
+/// Raised after a run wrote all its outputs and printed its report, when the result fails its
+/// own checks: main() prints the message and exits with kExitChecksFailed, so that a script
+/// can tell such a result from a sound one.
+class ChecksFailed : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

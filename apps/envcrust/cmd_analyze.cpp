@@ -52,6 +52,9 @@ void run_curve(const AnalyzeCommand& cmd) {
 
 void run_analyze(AnalyzeCommand& cmd) {
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
+  check_outputs_are_not_inputs({{"mesh", cmd.mesh}, {"--reference", cmd.reference}, {"--curve", cmd.curve}},
+                               {{"--report", cmd.report_file}});
+  const auto thread_limit = limit_threads(cmd.common.threads);
   if (!cmd.curve.empty()) {
     if (!cmd.mesh.empty()) throw UsageError("analyze: give either MESH or --curve, not both");
     run_curve(cmd);
@@ -106,6 +109,7 @@ void register_analyze(CLI::App& app) {
   sub->add_flag("--no-self-intersections", [cmd](std::int64_t) { cmd->options.use_self_intersections = false; },
                 "Skip the search for faces that pass through each other (a few seconds per million faces)");
   add_common_flags(*sub, cmd->common);
+  add_threads_option(*sub, cmd->common.threads);
   sub->callback([cmd] { run_analyze(*cmd); });
 }
 

@@ -139,7 +139,13 @@ void print_text(const nlohmann::json& j) {
 void run_boundary(BoundaryCommand& cmd) {
   if (!cmd.output.empty()) check_curve_output(cmd.output);
   if (!cmd.points_output.empty()) io::check_output_path(cmd.points_output, io::OutputKind::Points);
-  check_distinct_outputs({{"-o", cmd.output}, {"--points-out", cmd.points_output}});
+  const std::vector<std::pair<std::string, std::string>> outputs = {{"-o", cmd.output},
+                                                                    {"--points-out", cmd.points_output}};
+  check_distinct_outputs(outputs);
+  std::vector<std::pair<std::string, std::string>> inputs = {{"input", cmd.input}, {"--reference", cmd.reference}};
+  for (const auto& f : cmd.sampling.boundary_files) inputs.emplace_back("--boundary", f);
+  check_outputs_are_not_inputs(inputs, outputs);
+  const auto thread_limit = limit_threads(cmd.common.threads);
   cmd.sampling.builtin_as_points = true;
   std::optional<analysis::Reference> reference;
   if (!cmd.reference.empty()) {
@@ -223,6 +229,7 @@ void register_boundary(CLI::App& app) {
   add_crease_options(*sub, cmd->sampling);
   add_join_option(*sub, cmd->sampling.join);
   add_common_flags(*sub, cmd->common);
+  add_threads_option(*sub, cmd->common.threads);
   sub->callback([cmd] { run_boundary(*cmd); });
 }
 

@@ -90,6 +90,7 @@ std::optional<render::Font> load_font(const std::string& path, std::vector<std::
 
 void run_experiments(ExperimentCommand& cmd) {
   io::reuse_freed_memory();
+  const auto thread_limit = limit_threads(cmd.common.threads);
   if (cmd.list) {
     for (const auto& e : experiments::experiment_list())
       std::cout << e.name << (e.paper_figures.empty() ? "" : " (" + e.paper_figures + ")") << ": " << e.description
@@ -195,6 +196,7 @@ void register_experiment(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--font", cmd->font, "TrueType font of the captions")->capture_default_str();
   add_common_flags(*sub, cmd->common);
+  add_threads_option(*sub, cmd->common.threads);
   sub->callback([cmd] { run_experiments(*cmd); });
 }
 

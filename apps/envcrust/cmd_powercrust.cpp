@@ -46,7 +46,11 @@ void run_powercrust(PowerCrustCommand& cmd) {
   io::check_output_path(cmd.output, io::OutputKind::Mesh);
   if (!cmd.medial_axis_output.empty()) io::check_output_path(cmd.medial_axis_output, io::OutputKind::Mesh);
   if (!cmd.poles_output.empty()) io::check_output_path(cmd.poles_output, io::OutputKind::Text);
-  check_distinct_outputs({{"-o", cmd.output}, {"--medial-axis", cmd.medial_axis_output}, {"--poles", cmd.poles_output}});
+  const std::vector<std::pair<std::string, std::string>> outputs = {
+      {"-o", cmd.output}, {"--medial-axis", cmd.medial_axis_output}, {"--poles", cmd.poles_output}};
+  check_distinct_outputs(outputs);
+  check_outputs_are_not_inputs({{"input", cmd.input}}, outputs);
+  const auto thread_limit = limit_threads(cmd.common.threads);
   cmd.options.resolve_unknown = !cmd.keep_unknown;
   cmd.options.build_power_shape = !cmd.medial_axis_output.empty();
   const auto points = load_points(cmd);
@@ -119,6 +123,7 @@ void register_powercrust(CLI::App& app) {
   sub->add_option("input", cmd->input, "Point file (.xyz/.pts/.txt/.csv/.ply, or a mesh's vertices), or builtin:NAME or a NURBS file (.igs/.iges/.json, one patch or several), sampled")
       ->required();
   sub->add_option("-o,--output", cmd->output, "Crust mesh (.ply/.off/.obj)")->required();
+  add_threads_option(*sub, cmd->common.threads);
   sub->add_option("--medial-axis", cmd->medial_axis_output, "Write the inner power shape's triangles as a mesh");
   sub->add_option("--poles", cmd->poles_output, "Write the poles (polar balls): .ply with x y z radius and a label code (0 unknown, 1 in, 2 out), any "
                   "other name as text lines 'x y z radius in|out|unknown' (both read by render --balls)");

@@ -7,6 +7,7 @@
 #include "inputs.h"
 #include "reconstruct_hints.h"
 #include "reconstruct_output.h"
+#include "rho_support.h"
 #include "surface_input.h"
 
 #include "envcrust/distance.h"
@@ -42,6 +43,7 @@ struct ReconstructCommand {
   bool no_adaptive_retry = false;
   bool no_power_crust_fallback = false;
   bool use_remesh = false;
+  bool force = false;  // --force: run a rho the sampling cannot support
   remesh::RemeshOptions remesh;  // used with --remesh
   std::string orientable = "auto";    // --orientable: auto, yes or no
   std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_input_options)
@@ -124,6 +126,23 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
   add_join_option(sub, cmd.sampling.join);
   sub.add_option("--outliers-out", cmd.outliers_output,
                  "Also write the stray samples removed from a point file (.xyz/.ply; none: an empty file)");
+  sub.add_flag("--force", cmd.force,
+               "Run a given --rho even when the sampling cannot support it: below the rho that bridges the gaps "
+               "of 99% of the samples (their 8th-neighbour distances / 2.5), or with an envelope predicted "
+               "beyond 50 samples per input sample (at least 1 million, at most 5 million). Without it such a "
+               "rho is refused before the run, naming one that passes");
+  add_threads_option(sub, cmd.common.threads);
+}
+
+// A given uniform rho the input's sampling cannot support is refused before the run (in a
+// fraction of a second, not after minutes and gigabytes), naming one that passes.
+void check_rho(const ReconstructCommand& cmd, const LoadedSurface& loaded) {
+  const auto& e = cmd.options.envelope;
+  if (cmd.force || !e.rho || cmd.options.method != pipeline::Method::Envelope ||
+      e.rho_mode != envelope::RhoMode::Uniform || loaded.samples.points.size() < 2)
+    return;
+  const RhoSupport support = rho_support(loaded.samples, *e.rho, e.spacing_rel_rho);
+  if (!support.is_supported()) throw InvalidInput(rho_refusal(cmd.input, support));
 }
 
 void print_outliers_line(const LoadedSurface& loaded) {
@@ -194,15 +213,50 @@ void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   if (!cmd.boundary_output.empty()) check_curve_output(cmd.boundary_output);
   if (!cmd.outliers_output.empty()) io::check_output_path(cmd.outliers_output, io::OutputKind::Points);
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
-  check_distinct_outputs({{"-o", cmd.output},
-                          {"--envelope-out", cmd.envelope_output},
-                          {"--boundary-out", cmd.boundary_output},
-                          {"--outliers-out", cmd.outliers_output},
-                          {"--report", cmd.report_file}});
+  const std::vector<std::pair<std::string, std::string>> outputs = {{"-o", cmd.output},
+                                                                    {"--envelope-out", cmd.envelope_output},
+                                                                    {"--boundary-out", cmd.boundary_output},
+                                                                    {"--outliers-out", cmd.outliers_output},
+                                                                    {"--report", cmd.report_file}};
+  check_distinct_outputs(outputs);
+  std::vector<std::pair<std::string, std::string>> inputs = {{"input", cmd.input}, {"--reference", cmd.reference}};
+  for (const auto& f : cmd.sampling.boundary_files) inputs.emplace_back("--boundary", f);
+  check_outputs_are_not_inputs(inputs, outputs);
+}
+
+// The result's own checks, from what the analysis computed: a 2-manifold, not passing through
+// itself, its borders along the input's boundary curves and no others. One line per failure.
+std::vector<std::string> failed_checks(const analysis::AnalysisReport& report, const analysis::BoundaryCheck& check) {
+  std::vector<std::string> failed;
+  const auto& t = report.topology;
+  if (!t.is_manifold())
+    failed.push_back("not a 2-manifold (" + std::to_string(t.non_manifold_edges) + " non-manifold edges, " +
+                     std::to_string(t.non_manifold_vertices) + " non-manifold vertices)");
+  if (report.self_intersections && report.self_intersections->face_pairs > 0)
+    failed.push_back("passes through itself (" + std::to_string(report.self_intersections->face_pairs) +
+                     " pairs of faces)");
+  if (!check.missing_curves.empty())
+    failed.push_back(std::to_string(check.missing_curves.size()) + " of the input's " +
+                     std::to_string(check.matches.size()) + " boundary curves followed by no border");
+  if (!check.extra_loops.empty())
+    failed.push_back(std::to_string(check.extra_loops.size()) +
+                     (check.extra_loops.size() == 1 ? " border that follows" : " borders that follow") +
+                     " no boundary curve of the input (a hole it has not)");
+  return failed;
+}
+
+// After the outputs are written and the report printed: a result that fails its checks ends
+// the run with kExitChecksFailed.
+void throw_if_failed(const ReconstructCommand& cmd, const std::vector<std::string>& failed) {
+  if (failed.empty()) return;
+  std::string what;
+  for (const auto& f : failed) what += (what.empty() ? "" : "; ") + f;
+  throw ChecksFailed(cmd.output + " was written, but the result fails its checks: " + what);
 }
 
 void run_reconstruct(ReconstructCommand& cmd) {
   io::reuse_freed_memory();
+  const auto thread_limit = limit_threads(cmd.common.threads);
   check_outputs(cmd, io::OutputKind::Mesh);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
@@ -210,6 +264,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
   choose_input_options(cmd, loaded);
+  check_rho(cmd, loaded);
   // A reference that cannot be read fails now, not after the run.
   std::optional<analysis::Reference> given_reference;
   if (!cmd.reference.empty() && !cmd.no_analysis) given_reference = load_reference(cmd.reference);
@@ -222,6 +277,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
                       {"input_outliers_removed", loaded.outliers.size()},
                       {"notes", loaded.notes}};
   j.update(run_stages_json(result, cmd.options));
+  j["threads"] = allowed_threads();
   if (loaded.kind.is_orientable) j["input_is_orientable"] = *loaded.kind.is_orientable;
   if (loaded.kind.genus) j["input_genus"] = *loaded.kind.genus;
   if (loaded.detection && !loaded.detection->loop_widths.empty())
@@ -231,6 +287,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   std::optional<analysis::AnalysisReport> report;
   std::optional<double> boundary_gap;  // of the reference's boundary from the samples, / diagonal
   std::vector<std::size_t> unresolved_curves;  // input curves below the resolution (boundary check)
+  std::vector<std::string> failed;             // the result's own checks that fail
   if (!cmd.no_analysis) {
     // The truth when known: the exact surface of a built-in or a NURBS patch, a mesh input's own surface (its
     // vertices alone would count the triangles' size as error); else the input points.
@@ -268,6 +325,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
     tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << check.tolerance;
     j["boundary_check"] = boundary_check_json(check, curves, report->topology);
     unresolved_curves = check.unresolved_curves;
+    failed = failed_checks(*report, check);
+    j["checks"] = {{"passed", failed.empty()}, {"failed", failed}};
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));
   }
@@ -292,11 +351,11 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
   write_outliers(cmd, loaded);
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, report_text);
-  if (cmd.common.json) {
-    print_json(j);
+  if (cmd.common.json || cmd.common.quiet) {
+    if (cmd.common.json) print_json(j);
+    throw_if_failed(cmd, failed);
     return;
   }
-  if (cmd.common.quiet) return;
   std::cout << "reconstructed " << cmd.input << " (" << loaded.samples.points.size() << " points) -> "
             << cmd.output << "\n";
   print_outliers_line(loaded);
@@ -308,17 +367,20 @@ void run_reconstruct(ReconstructCommand& cmd) {
               << 100 * *boundary_gap << "% of the diagonal from the nearest of them (as closely as they "
               << "locate it)\n";
   for (const auto& h : hints) std::cout << "  hint: " << h << "\n";
+  throw_if_failed(cmd, failed);
 }
 
 
 void run_envelope(ReconstructCommand& cmd) {
   io::reuse_freed_memory();
+  const auto thread_limit = limit_threads(cmd.common.threads);
   check_outputs(cmd, io::OutputKind::Points);
   cmd.options.envelope.rho = parse_rho(cmd.rho);
   cmd.options.envelope.seed = cmd.sampling.seed;
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
   cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);  // the envelope's settings
+  check_rho(cmd, loaded);
   progress.report("envelope", 0.0);
   const auto env = naming_input(cmd.input, [&] { return envelope::sample_envelope(loaded.samples, cmd.options.envelope); });
   progress.report("envelope", 1.0);
@@ -434,6 +496,13 @@ void register_reconstruct(CLI::App& app) {
                 "no hole)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   add_common_flags(*sub, cmd->common);
+  sub->footer(
+      "Exit codes: 0 the result was written and passes its checks; 1 bad input, or a run refused before it\n"
+      "started (e.g. a --rho the sampling cannot support), nothing written; 2 usage error (also an output\n"
+      "that is the same file as an input); 3 internal error; 4 the result was written but fails its own\n"
+      "checks: it is not a 2-manifold, it passes through itself, an input boundary curve is followed by no\n"
+      "border, or a border follows no input curve (the report's \"checks\" lists which; --no-analysis skips\n"
+      "the checks).");
   sub->callback([cmd] { run_reconstruct(*cmd); });
 }
 

@@ -196,6 +196,11 @@ std::optional<render::Font> load_font(const RenderCommand& cmd, std::vector<std:
 
 void run_render(RenderCommand& cmd) {
   io::check_output_path(cmd.output, io::OutputKind::Image);
+  std::vector<std::pair<std::string, std::string>> inputs = {{"--error-to", cmd.error_reference}, {"--font", cmd.font}};
+  for (const auto& f : cmd.inputs) inputs.emplace_back("input", f);
+  for (const auto& f : cmd.balls) inputs.emplace_back("--balls", f);
+  check_outputs_are_not_inputs(inputs, {{"-o", cmd.output}});
+  const auto thread_limit = limit_threads(cmd.common.threads);
   const auto start = std::chrono::steady_clock::now();
   parse_size(cmd.size, cmd.options);
   cmd.options.view = parse_view(cmd.view);
@@ -339,6 +344,7 @@ void register_render(CLI::App& app) {
                   "With --error-to: the distance drawn red (default: the largest over all panels)")
       ->check(number_above(0));
   add_common_flags(*sub, cmd->common);
+  add_threads_option(*sub, cmd->common.threads);
   sub->callback([cmd] { run_render(*cmd); });
 }
 

@@ -71,6 +71,8 @@ void run_sample(const SampleCommand& cmd) {
   if (!cmd.output.empty()) io::check_output_path(cmd.output, cmd.mesh ? io::OutputKind::Mesh : io::OutputKind::Points);
   if (!cmd.boundary_output.empty()) io::check_output_path(cmd.boundary_output, io::OutputKind::Polyline);
   check_distinct_outputs({{"-o", cmd.output}, {"--boundary-out", cmd.boundary_output}});
+  if (is_parametric_spec(cmd.surface) && !is_builtin_spec(cmd.surface))  // a NURBS file
+    check_outputs_are_not_inputs({{"surface", cmd.surface}}, {{"-o", cmd.output}, {"--boundary-out", cmd.boundary_output}});
   const auto model = parametric_model(is_parametric_spec(cmd.surface) ? cmd.surface : "builtin:" + cmd.surface, cmd.join);
   nlohmann::json report = {{"surface", cmd.surface}};
   if (!cmd.output.empty()) {

@@ -1,5 +1,6 @@
 // Entry point of the envcrust command-line tool: registers subcommands and maps errors to
-// exit codes (1 bad input or options, 2 usage, 3 internal error).
+// exit codes (1 bad input or options, 2 usage, 3 internal error, 4 a result written that fails
+// its own checks).
 #include "cli_common.h"
 #include "commands.h"
 
@@ -28,7 +29,9 @@ int main(int argc, char** argv) {
   for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, remove_temp_files_and_die);
   CLI::App app{
       "envcrust: reconstruction of surfaces with boundary through their rho-envelope.\n"
-      "Run 'envcrust SUBCOMMAND --help' for the options of a subcommand."};
+      "Run 'envcrust SUBCOMMAND --help' for the options of a subcommand.\n"
+      "Exit codes: 0 success, 1 bad input or a refused run, 2 usage error, 3 internal error,\n"
+      "4 (reconstruct) the result was written but fails its own checks (see --help of reconstruct)."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "envcrust 0.1.0");
   envcrust::cli::register_sample(app);
@@ -50,6 +53,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "envcrust: usage error: " << e.what() << "\n";
     return 2;
+  } catch (const envcrust::cli::ChecksFailed& e) {
+    std::cerr << "envcrust: " << e.what() << "\n";
+    return envcrust::cli::kExitChecksFailed;
   } catch (const envcrust::cli::UsageError& e) {
     std::cerr << "envcrust: usage error: " << e.what() << "\n";
     return 2;
