@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # envcrust set-up: install missing Debian packages (idempotent), build, then
 #   run   - run the main job on a built-in example (default)
-#   test  - run the whole test suite (what .ci/run calls)
+#   test  - run the whole test suite, then install into a temporary prefix and build and run
+#           examples/cpp against the installed package (what .ci/run calls)
 #   build - only build
 set -euo pipefail
 mode="${1:-run}"
@@ -40,6 +41,7 @@ case "$mode" in
     ;;
   test)
     ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
+    bash "$root/scripts/test_install.sh" "$build"
     ;;
   *) echo "usage: scripts/setup.sh [run|test|build]" >&2; exit 2 ;;
 esac
