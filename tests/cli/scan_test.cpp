@@ -48,7 +48,8 @@ TEST_F(CliTest, issue_5_foot_scan_is_a_manifold_disc_with_the_ankle_loop) {
 // The bunny with the defaults: the uniform run follows each of the 4 detected curves (since
 // they are fitted to the outermost samples; before, 2 of its loops ran along none within 2
 // rho and the adaptive retry was kept), so it runs once. Its cross-caps and handles at the
-// ear tips and the base rim are cut out and the holes closed.
+// ear tips and the base rim are cut out and the holes closed: what is asserted is the result
+// (one orientable genus-0 piece, embedded, near the scan), not which repairs ran.
 TEST_F(CliTest, issue_5_bunny_is_one_orientable_genus_0_piece_with_its_base_holes) {
   const std::filesystem::path folder = std::filesystem::path(ENVCRUST_SHARED_DIR) / "data" / "stanford_bunny_zipper";
   if (!std::filesystem::exists(folder / "points.xyz")) GTEST_SKIP() << "no " << folder;
@@ -58,17 +59,11 @@ TEST_F(CliTest, issue_5_bunny_is_one_orientable_genus_0_piece_with_its_base_hole
   EXPECT_FALSE(j.contains("adaptive_retry"));
   EXPECT_EQ(j["boundary_check"]["is_consistent"], true);
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);
-  EXPECT_GT(j["sheet"]["orientation_seams"].get<int>(), 0);
-  EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
-  EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
-  EXPECT_GT(j["sheet"]["cut_holes_filled"].get<int>(), 0);
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 4, -2);  // genus 0 with 4 holes
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);
   EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.025);
   // Its 3,067 crossings: most relaxed, the rest cut out in two rounds (one left 123).
-  EXPECT_GT(j["sheet"]["self_intersections_found"].get<long>(), 1000);
-  EXPECT_GE(j["sheet"]["self_intersection_cut_rounds"].get<int>(), 2);
   EXPECT_EQ(a["self_intersections"]["face_pairs"], 0);
   EXPECT_EQ(j["sheet"]["self_intersections_left"], 0);
   EXPECT_EQ(a["is_embedded"], true);
@@ -87,8 +82,6 @@ TEST_F(CliTest, issue_5_bunny_with_adaptive_rho_is_one_genus_0_piece) {
   const auto j = run_envcrust_json("reconstruct " + (folder / "points.xyz").string() + " -o " + path("bunny.ply") +
                                    " --rho-adaptive --reference " + (folder / "bun_zipper.ply").string() + " --json");
   EXPECT_FALSE(j.contains("adaptive_retry"));
-  EXPECT_EQ(j["sheet"]["orientation_seams"], 0);
-  EXPECT_GT(j["sheet"]["handle_balls"].get<int>(), 0);
   const auto& a = j["analysis"];
   expect_one_orientable_piece(a, 4, -2);
   EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.025);

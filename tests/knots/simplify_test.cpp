@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 
 namespace envcrust::knots::detail {
@@ -24,12 +23,12 @@ TEST(Simplify, FineTrefoilShrinksToAFewDozenVerticesAndStaysATrefoil) {
   EXPECT_EQ(identify_knot(simplified.front()).type, KnotType::Trefoil);
 }
 
-TEST(Simplify, TwoThousandVertexTrefoilTakesWellUnderASecond) {
+// Its time is measured by envcrust_bench (bench/bench_main.cpp), not asserted here.
+TEST(Simplify, RotatedTwoThousandVertexTrefoilShrinksAndStaysATrefoil) {
   const Polyline curve = test::randomly_rotated(sample(test::trefoil, 2000), 3);
-  const auto start = std::chrono::steady_clock::now();
-  simplify_loops({curve});
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  EXPECT_LT(elapsed.count(), 0.5);
+  const std::vector<Polyline> simplified = simplify_loops({curve});
+  EXPECT_LE(simplified.front().size(), 36U);
+  EXPECT_EQ(identify_knot(simplified.front()).type, KnotType::Trefoil);
 }
 
 TEST(Simplify, LoopsAreSimplifiedWithoutPassingThroughEachOther) {
