@@ -50,6 +50,7 @@ import json
 import math
 import os
 import random
+import re
 import signal
 import statistics
 import subprocess
@@ -387,7 +388,8 @@ def tool_cells(r, raw=False):
     if r is None:
         return ["not run"] + [""] * (7 if raw else 6)
     if "error" in r:
-        cells = [f"**{r['error'][:80]}**", "✗", "", "", f"{r['seconds']:.1f}",
+        message = re.sub(r"envcrust: error: [^ ]*: ", "", r["error"])
+        cells = [f"**{message[:110]}**", "✗", "", "", f"{r['seconds']:.1f}",
                  "" if r.get("peak_mb") is None else f"{r['peak_mb']}", ""]
         return cells + ([""] if raw else [])
     cells = [topo_text(r["topology"]), "✓" if r.get("topology_right") else "✗",
@@ -399,7 +401,8 @@ def tool_cells(r, raw=False):
         if r.get("kept") != "uniform":
             defects += f" ({r.get('kept')})"
         if r.get("own_checks_failed"):
-            defects += " [fails own checks: " + r["own_checks_failed"].split("fails its checks: ")[-1][:60] + "]"
+            checks = r["own_checks_failed"].split("fails its checks: ")[-1].split("; ")
+            defects += " [fails own checks: " + checks[0] + (f"; +{len(checks) - 1} more" if len(checks) > 1 else "") + "]"
         cells.append(defects)
     return cells
 
