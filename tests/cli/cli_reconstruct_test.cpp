@@ -82,7 +82,10 @@ TEST_F(CliTest, reconstruct_moebius_is_non_orientable_with_one_boundary) {
 
 TEST_F(CliTest, direct_power_crust_closes_the_open_cylinder) {
   const auto r = run_envcrust("reconstruct builtin:cylinder -n 2000 --method powercrust -o " + path("pc.ply") + " --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Written, but it fails its own checks (its border follows neither rim): exit code 4.
+  ASSERT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_EQ(r.err, "envcrust: " + path("pc.ply") + " was written, but the result fails its checks: 2 of the input's "
+                   "2 boundary curves followed by no border\n");
   const auto a = nlohmann::json::parse(r.out)["analysis"];
   EXPECT_EQ(a["boundary_loops"], 0);
   EXPECT_EQ(a["is_closed"], true);
@@ -204,7 +207,11 @@ TEST_F(CliTest, reconstruct_sparse_input_gets_a_rho_that_bridges_its_gaps) {
 // names a count that would do. 80 points of the cylinder give nothing, and the error says why.
 TEST_F(CliTest, reconstruct_of_an_input_too_sparse_for_its_size_says_so) {
   ASSERT_EQ(run_envcrust("sample square -n 40 --seed 1 -o " + path("square.xyz")).exit_code, 0);
-  const auto j = run_envcrust_json("reconstruct " + path("square.xyz") + " -o " + path("s.ply") + " --json");
+  // The result is written but passes through itself, so the run exits with 4.
+  const auto sparse = run_envcrust("reconstruct " + path("square.xyz") + " -o " + path("s.ply") + " --json");
+  EXPECT_EQ(sparse.exit_code, 4) << sparse.err;
+  EXPECT_NE(sparse.err.find("fails its checks: passes through itself"), std::string::npos) << sparse.err;
+  const auto j = nlohmann::json::parse(sparse.out);
   EXPECT_TRUE(j["envelope"]["input_too_sparse"].get<bool>());
   bool warned = false;
   for (const auto& w : j["warnings"])
