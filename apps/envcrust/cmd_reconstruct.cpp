@@ -226,7 +226,10 @@ void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
 
 // The result's own checks, from what the analysis computed: a 2-manifold, not passing through
 // itself, its borders along the input's boundary curves and no others. One line per failure.
-std::vector<std::string> failed_checks(const analysis::AnalysisReport& report, const analysis::BoundaryCheck& check) {
+// Curves closed on purpose are no failure: detected curves (maybe false ones) that the Power
+// Crust fallback, which counts each one it closes as a defect, still chose to close.
+std::vector<std::string> failed_checks(const analysis::AnalysisReport& report, const analysis::BoundaryCheck& check,
+                                       bool are_closed_curves_accepted) {
   std::vector<std::string> failed;
   const auto& t = report.topology;
   if (!t.is_manifold())
@@ -235,7 +238,7 @@ std::vector<std::string> failed_checks(const analysis::AnalysisReport& report, c
   if (report.self_intersections && report.self_intersections->face_pairs > 0)
     failed.push_back("passes through itself (" + std::to_string(report.self_intersections->face_pairs) +
                      " pairs of faces)");
-  if (!check.missing_curves.empty())
+  if (!check.missing_curves.empty() && !are_closed_curves_accepted)
     failed.push_back(std::to_string(check.missing_curves.size()) + " of the input's " +
                      std::to_string(check.matches.size()) + " boundary curves followed by no border");
   if (!check.extra_loops.empty())
@@ -325,7 +328,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
     tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << check.tolerance;
     j["boundary_check"] = boundary_check_json(check, curves, report->topology);
     unresolved_curves = check.unresolved_curves;
-    failed = failed_checks(*report, check);
+    const bool fallback_closed = loaded.kind.is_boundary_detected && result.power_crust_fallback &&
+                                 result.power_crust_fallback->kept_power_crust;
+    failed = failed_checks(*report, check, fallback_closed);
     j["checks"] = {{"passed", failed.empty()}, {"failed", failed}};
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));
@@ -501,8 +506,9 @@ void register_reconstruct(CLI::App& app) {
       "started (e.g. a --rho the sampling cannot support), nothing written; 2 usage error (also an output\n"
       "that is the same file as an input); 3 internal error; 4 the result was written but fails its own\n"
       "checks: it is not a 2-manifold, it passes through itself, an input boundary curve is followed by no\n"
-      "border, or a border follows no input curve (the report's \"checks\" lists which; --no-analysis skips\n"
-      "the checks).");
+      "border (unless the curves were detected and the Power Crust fallback was kept: it closes them on\n"
+      "purpose), or a border follows no input curve (the report's \"checks\" lists which; --no-analysis\n"
+      "skips the checks).");
   sub->callback([cmd] { run_reconstruct(*cmd); });
 }
 
