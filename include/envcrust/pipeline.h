@@ -92,8 +92,10 @@ struct InputKind {
 inline constexpr double kScanCutHandlesRelRho = 1.5;
 
 /// `options` with the settings for such input, as `envcrust reconstruct` runs it: estimated
-/// normals take the 5th percentile of the per-sample reach (they scatter it, METHOD.md §2)
-/// and leave the result's orientation as it comes (their signs are arbitrary);
+/// normals, and every point file whatever its normals (the frames of curves fitted to its rim
+/// samples scatter the reach as much), take the 5th percentile of the per-sample reach
+/// (METHOD.md §2); estimated normals leave the result's orientation as it comes (their signs
+/// are arbitrary);
 /// the medial sheet of a scan is cut at handles (kScanCutHandlesRelRho) and to an orientable
 /// sheet, at every seam for an orientable mesh and for a point file (which does not say) only
 /// at seams an orientation-reversing loop shorter than extract::kTwistMinLoopRelRho crosses;
