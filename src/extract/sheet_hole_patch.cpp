@@ -134,12 +134,17 @@ bool reuses_sheet_edge(const std::vector<Index>& loop, const Patch& patch,
   return false;
 }
 
-// The smoothest surface through the loop (bi-Laplacian fairing, the loop fixed): every
-// vertex past the loop's is the patch's own and moves.
-void fair_inside(Patch& patch, std::size_t loop_size) {
+// The patch's own vertices: every one past the loop's (which come first and stay fixed).
+std::vector<Patch::Vertex_index> inner_vertices(const Patch& patch, std::size_t loop_size) {
   std::vector<Patch::Vertex_index> inner;
   for (auto v : patch.vertices())
     if (static_cast<std::size_t>(v) >= loop_size) inner.push_back(v);
+  return inner;
+}
+
+// The smoothest surface through the loop (bi-Laplacian fairing of the inner vertices).
+void fair_inside(Patch& patch, std::size_t loop_size) {
+  const auto inner = inner_vertices(patch, loop_size);
   if (!inner.empty()) PMP::fair(patch, inner);
 }
 
@@ -149,14 +154,10 @@ void fair_inside(Patch& patch, std::size_t loop_size) {
 // from the rings shrunk into a zigzag loop it overshot by 20% of the lion head's diagonal,
 // from the membrane it does not.
 void relax_to_membrane(Patch& patch, std::size_t loop_size) {
-  std::vector<int> row(patch.num_vertices(), -1);
-  std::vector<Patch::Vertex_index> inner;
-  for (auto v : patch.vertices())
-    if (static_cast<std::size_t>(v) >= loop_size) {
-      row[v] = static_cast<int>(inner.size());
-      inner.push_back(v);
-    }
+  const auto inner = inner_vertices(patch, loop_size);
   if (inner.empty()) return;
+  std::vector<int> row(patch.num_vertices(), -1);
+  for (std::size_t r = 0; r < inner.size(); ++r) row[inner[r]] = static_cast<int>(r);
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(inner.size()), 3);
   for (std::size_t r = 0; r < inner.size(); ++r) {

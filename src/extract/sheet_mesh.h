@@ -64,15 +64,15 @@ std::size_t drop_far_faces(TaggedMesh& tagged, const NearestIndex& samples,
 /// How a hole is closed.
 enum class HoleFill {
   Fan,    ///< triangles from the loop's edges to its centroid (a new vertex)
-  Patch,  ///< fill_with_patch; where the loop passes a vertex twice, its simple cycles each
-          ///< so; a fan where none is found
+  Patch,  ///< fill_hole: fill_with_patch, cycle by cycle where the loop passes a vertex
+          ///< twice; a fan where no disc is found
 };
 
 /// Close the border loop `loop` (vertex ids in order) with a disc of smooth, even triangles:
-/// CGAL's hole triangulation of the loop, or rings shrunk from the loop to its centroid where
-/// CGAL finds none or one that would put a third face on a sheet edge (long, twisted cut
-/// holes; a fan from the centroid was refined no further), refined to the loop's edge density and
-/// faired with the loop fixed. New faces get the tag -1. False (nothing added) for a loop of
+/// CGAL's hole triangulation of the loop refined to its edge density, or, where CGAL finds
+/// none or one that would put a third face on a sheet edge (long, twisted cut holes), rings
+/// shrunk from the loop to its centroid relaxed to the membrane; then faired with the loop
+/// fixed. New faces get the tag -1. False (nothing added) for a loop of
 /// fewer than 3 vertices or through one vertex twice (no disc spans it without a pinch).
 /// `sheet_edges` (edge_key) holds at least the sheet's edges between two of the loop's
 /// vertices; without it they are looked up over the whole sheet.
@@ -80,13 +80,13 @@ bool fill_with_patch(TaggedMesh& tagged, const std::vector<Index>& loop);
 bool fill_with_patch(TaggedMesh& tagged, const std::vector<Index>& loop,
                      const std::unordered_set<std::uint64_t>& sheet_edges);
 
-/// An undirected edge as one key.
-inline std::uint64_t edge_key(Index a, Index b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
-
 /// Close a border loop with a smooth disc (fill_with_patch); where it passes a vertex twice,
 /// one over each of its simple cycles (a fan over the whole loop was a star of slivers from
 /// one point, split at the pinch by the repair after it); a fan where no disc is found.
 void fill_hole(TaggedMesh& tagged, const std::vector<Index>& loop, const std::unordered_set<std::uint64_t>& sheet_edges);
+
+/// An undirected edge as one key.
+inline std::uint64_t edge_key(Index a, Index b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
 /// The edges of `mesh` between two vertices of `loops` (edge_key): what fill_with_patch
 /// needs for each of them, found in one pass over the faces.
