@@ -1,5 +1,5 @@
 // The rho-envelope E = {x : d(x, M) = rho} of a surface M with boundary: choice of rho from the
-// reach of M, and a uniform sample of E tagged with what generated each point (METHOD.md §2-3).
+// reach of M, and a uniform sample of E tagged with what generated each point (docs/method.md §4-5).
 #pragma once
 
 #include "envcrust/types.h"
@@ -51,7 +51,7 @@ class CreaseDistance {
 };
 
 /// Estimate of the reach R of M (distance from M to its medial axis) by Federer's formula
-/// R = inf |q - p|^2 / (2 dist(q - p, Tan_p)) over sample pairs (METHOD.md §2).
+/// R = inf |q - p|^2 / (2 dist(q - p, Tan_p)) over sample pairs (docs/method.md §4.1).
 struct ReachEstimate {
   double reach = 0.0;              ///< R-hat
   double curvature_radius = 0.0;   ///< smallest value over near pairs (~ 1 / kappa_max)
@@ -63,7 +63,7 @@ struct ReachEstimate {
 struct ReachOptions {
   std::size_t max_points = 4000;  ///< random subsample size (pairs are examined all-to-all)
   /// Quantile of the per-point values taken as R-hat: 0 takes the minimum (exact samples);
-  /// point clouds with noise want a small positive quantile (METHOD.md §2: 5th percentile).
+  /// point clouds with noise want a small positive quantile (docs/method.md §4.3: 5th percentile).
   /// Points that no pair constrains count as infinite (the flat, convex part): measured on a
   /// 10k-point file of the square, leaving them out took the quantile among the few rim
   /// points left and gave rho 0.031 instead of the cap 0.141.
@@ -120,18 +120,18 @@ struct LocalReachOptions {
 };
 
 /// Per-sample local reach (feature size): Federer's value |q - p|^2 / (2 |(q - p) . n_p|)
-/// minimised over the samples q within the search radius (METHOD.md §2), median-smoothed over
+/// minimised over the samples q within the search radius (docs/method.md §4.4), median-smoothed over
 /// neighbours; infinite where no pair constrains it (a flat piece). One value per point.
 /// @throws InvalidInput on mismatched sizes; InvalidOptions on an option out of range.
 std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const LocalReachOptions& options = {});
 
 /// Options of adaptive_rho.
 struct AdaptiveRhoOptions {
-  double rho_rel_lfs = 0.5;      ///< alpha of rho(p) = alpha lfs(p) (METHOD.md §2), (0, 1)
+  double rho_rel_lfs = 0.5;      ///< alpha of rho(p) = alpha lfs(p) (docs/method.md §4.4), (0, 1)
   double rho_min = 0.0;          ///< lower clamp (absolute, >= 0)
   double rho_max = 1.0;          ///< upper clamp (absolute, > 0, >= rho_min)
   /// Lipschitz constant L of the result over the k-nearest-neighbour graph: rho(p) <=
-  /// rho(q) + L |p - q| (METHOD.md §2: 0.3; |grad rho| < 1 keeps M the inner medial axis).
+  /// rho(q) + L |p - q| (docs/method.md §4.4: 0.3; |grad rho| < 1 keeps M the inner medial axis).
   /// Range [0, 1).
   double lipschitz = 0.3;
   int neighbors = 12;            ///< k of the graph the Lipschitz bound is enforced on, >= 1
@@ -160,7 +160,7 @@ enum class EnvelopePart : std::uint8_t {
   Corner   ///< spherical lune at a convex boundary corner
 };
 
-/// One envelope sample with its tags (what METHOD.md §5c1 relies on).
+/// One envelope sample with its tags (what the extraction relies on, docs/method.md §5.1).
 struct EnvelopeSample {
   Point3 position;
   Point3 generator;      ///< g in M with position = g + rho * direction
@@ -171,7 +171,7 @@ struct EnvelopeSample {
 
 /// Options of sample_envelope.
 struct EnvelopeOptions {
-  /// Envelope radius; nullopt: 0.5 * reach (METHOD.md F2: lfs of E is then rho everywhere).
+  /// Envelope radius; nullopt: 0.5 * reach (docs/method.md §2.2: lfs of E is then rho everywhere).
   std::optional<double> rho;
   /// Fraction of the reach used when rho is chosen automatically. Range (0, 1).
   double rho_rel_reach = 0.5;
@@ -188,7 +188,7 @@ struct EnvelopeOptions {
   /// gets folds there (handles, cross-caps: SheetOptions' cuts repair them) instead of holes
   /// everywhere. A quantile, not the largest gap: one stray sample would set it. Measured:
   /// 0.99 raises the automatic rho of the lion head (0.014 -> 0.025) and of the face scan
-  /// and of no other scan in ../shared/data nor any built-in surface at 10k samples.
+  /// and of no other scan of the development set nor any built-in surface at 10k samples.
   /// Range [0, 1]; 0 disables.
   double gap_quantile = 0.99;
   /// Cap of the reach used for automatic rho, as a fraction of the bounding-box diagonal
@@ -204,7 +204,7 @@ struct EnvelopeOptions {
   /// Range > 0.
   double max_reach_rel_half_width = 2.0;
   /// Quantile of the per-sample reach values used for automatic rho: 0 (the minimum) for
-  /// exact normals; estimated normals want 0.05 (METHOD.md §2). Range [0, 1).
+  /// exact normals; estimated normals want 0.05 (docs/method.md §4.3). Range [0, 1).
   double reach_quantile = 0.0;
   /// Pairs closer than this many average sample spacings are ignored by the automatic reach
   /// (ReachOptions::min_pair_distance): noise of sigma makes a pair at distance d read about
@@ -213,12 +213,12 @@ struct EnvelopeOptions {
   double reach_min_pair_rel_spacing = 4.0;
   /// Poisson-disk radius h of the envelope samples as a fraction of rho. The extraction
   /// needs cells spanning the shell with small lateral offset: 0.33 worked, 0.5 broke
-  /// (METHOD.md §3.2); 0.25 gives a sheet error of rho/64 (F4). Range (0, 4]: above 1 the
+  /// (docs/method.md §5.2); 0.25 gives a sheet error of rho/64 (§2.4). Range (0, 4]: above 1 the
   /// envelope is sampled sparser than its own radius, which only experiments ask for (the
   /// unknot-radius sweep at a fixed absolute spacing).
   double spacing_rel_rho = 0.25;
   /// Drop samples that come closer than this fraction of rho to the input samples: they are
-  /// not on the envelope (METHOD.md probe: 0.9 for sheets; rims use `rim_clearance`).
+  /// not on the envelope (docs/method.md §5.3: 0.9 for sheets; rims use `rim_clearance`).
   double sheet_clearance = 0.9;
   double rim_clearance = 0.97;   ///< same for rim and corner samples
   /// Warn that rho may be too large when more than this fraction of the sheet candidates come
@@ -236,7 +236,7 @@ struct EnvelopeOptions {
   /// Adaptive mode: lower clamp as a fraction of rho_max, (0, 1]. 0.25: the extraction needs
   /// envelope samples at 0.25 rho, so a smaller rho costs (rho_max / rho)^2 more samples.
   double adaptive_min_rel_rho = 0.25;
-  /// Adaptive mode: alpha and L of adaptive_rho (METHOD.md §2: 0.5 and 0.3).
+  /// Adaptive mode: alpha and L of adaptive_rho (docs/method.md §4.4: 0.5 and 0.3).
   double adaptive_rho_rel_lfs = 0.5;
   double adaptive_lipschitz = 0.3;
   /// Adaptive mode: rho also grows with the local spacing, to at least the median over each

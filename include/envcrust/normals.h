@@ -1,5 +1,5 @@
 // Normal lines of point clouds (CGAL jet/PCA fitting) and of indexed triangle meshes, and the
-// average sample spacing of a point cloud (METHOD.md sections 1 and 3.3b).
+// average sample spacing of a point cloud (docs/method.md §3.3 and §6.2).
 #pragma once
 
 #include "envcrust/mesh.h"
@@ -12,7 +12,7 @@ namespace envcrust::normals {
 
 /// Average spacing as CGAL::compute_average_spacing defines it (parallel): per point the sum
 /// of the distances to its k nearest other points divided by k + 1, averaged over the cloud.
-/// This is the "s" of METHOD.md section 3.3.
+/// This is the "s" of docs/method.md §6.
 /// @throws InvalidOptions if k < 2; InvalidInput on a non-finite coordinate;
 /// DegenerateInput with fewer than 3 points. k is capped at the number of other points.
 double average_spacing(const std::vector<Point3>& points, int k = 6);
@@ -41,7 +41,7 @@ enum class NormalMethod {
 ///   trefoil noisy    11/24/88         7.0/14/76        5.1/10/21        12/29/85
 ///
 /// Jet fitting is ~100x more accurate on exact samples, but PCA's ~0.5 degree is far below
-/// what the envelope needs (METHOD F5: interior normal errors cost ~rho delta^2 / 2), while
+/// what the envelope needs (docs/method.md §2.5: interior normal errors cost ~rho delta^2 / 2), while
 /// under noise jet k18 is the worst (tails to 85 degrees). PCA improves with k under noise and
 /// is flat in k on clean data; k 24 (not 32) keeps the fit local on sparse clouds, where the
 /// neighbourhood radius approaches feature sizes such as the ribbons' width.

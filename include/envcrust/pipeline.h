@@ -23,7 +23,7 @@ enum class Method {
 
 /// How M is taken from the envelope's reconstruction (Method::Envelope only).
 enum class Extraction {
-  Sheet,      ///< clean 2-manifold medial sheet (METHOD.md §5 c1), the default
+  Sheet,      ///< clean 2-manifold medial sheet (docs/method.md §8), the default
   PowerShape  ///< the paper's expedient: the raw inner power shape, for comparison
 };
 
@@ -35,7 +35,7 @@ struct ReconstructOptions {
   extract::SheetOptions sheet;
   powercrust::PowerCrustOptions power_crust;
   /// Also run the Power Crust on the envelope samples and report its topology as a
-  /// self-check (chi(E) = 2 chi(M), METHOD.md F3). Costs about one more reconstruction.
+  /// self-check (chi(E) = 2 chi(M), docs/method.md §2.3, §9.6). Costs about one more reconstruction.
   bool use_envelope_crust_check = false;
   /// Remesh the result isotropically as a last step (keeps its topology and boundary; a
   /// non-orientable result is cut along a seam and welded back; skipped with a warning for
@@ -94,7 +94,7 @@ inline constexpr double kScanCutHandlesRelRho = 1.5;
 /// `options` with the settings for such input, as `envcrust reconstruct` runs it: estimated
 /// normals, and every point file whatever its normals (the frames of curves fitted to its rim
 /// samples scatter the reach as much), take the 5th percentile of the per-sample reach
-/// (METHOD.md §2); estimated normals leave the result's orientation as it comes (their signs
+/// (docs/method.md §4.3); estimated normals leave the result's orientation as it comes (their signs
 /// are arbitrary);
 /// the medial sheet of a scan is cut at handles (kScanCutHandlesRelRho) and to an orientable
 /// sheet, at every seam for an orientable mesh and for a point file (which does not say) only

@@ -1,4 +1,4 @@
-// Local reach per sample and the adaptive rho built from it (METHOD.md §2, "Adaptive rho").
+// Local reach per sample and the adaptive rho built from it (docs/method.md §4.4).
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 #include "envcrust/nearest_index.h"

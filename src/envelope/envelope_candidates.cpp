@@ -1,4 +1,4 @@
-// Candidate generation on the three parts of the envelope (METHOD.md §3.1).
+// Candidate generation on the three parts of the envelope (docs/method.md §5.1).
 #include "envelope_candidates.h"
 #include "input_tree.h"
 

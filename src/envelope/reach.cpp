@@ -1,4 +1,4 @@
-// Reach estimation by Federer's formula over all pairs of a random subsample (METHOD.md §2).
+// Reach estimation by Federer's formula over all pairs of a random subsample (docs/method.md §4.1).
 #include "envcrust/envelope.h"
 #include "envcrust/errors.h"
 

@@ -21,7 +21,7 @@
 namespace envcrust::envelope {
 namespace {
 
-constexpr double kCandidatesPerH2 = 12.0;  // METHOD.md §3.1 asks for >= 10 per h^2
+constexpr double kCandidatesPerH2 = 12.0;  // docs/method.md §5.1: at least 10 per h^2
 // Gaps of the input up to this many rho are bridged by the envelope's sheets. Measured on
 // 2,000 cylinder samples (largest gap 0.241): holes join the inner and outer medial axes and
 // the result is empty at rho = gap / 2.97, but not at gap / 2.98 or gap / 2.84 and above;

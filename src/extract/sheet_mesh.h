@@ -94,8 +94,8 @@ std::unordered_set<std::uint64_t> edges_among(const TriangleMesh& mesh, const st
 
 /// Fill the border loops of which fewer than half the vertices lie within `max_distance` of
 /// `boundary_points`: such a loop follows no boundary curve of M, so it is a hole of the
-/// envelope where the input has a sampling gap, or one that a cut left (METHOD.md §5 c1
-/// self-check: every border loop runs along a rim). Returns the number of loops filled.
+/// envelope where the input has a sampling gap, or one that a cut left (docs/method.md §9.6:
+/// every border loop runs along a rim). Returns the number of loops filled.
 std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
                                           double max_distance, HoleFill fill = HoleFill::Fan);
 
