@@ -14,7 +14,7 @@ watched, stopped and resumed with --resume).
 
 Inputs, named SHAPE/VARIANT:
   SHAPE: a mesh of CGAL's example data (data/meshes/SHAPE.off; the list is OPEN + CLOSED
-         below), or scan:NAME, a scan of ../shared/data with its own mesh as truth (SCANS below),
+         below), or scan:NAME, a scan in the --scans folder with its own mesh as truth (SCANS below),
          or builtin:NAME, a built-in surface with its fine tessellation as truth (BUILTINS; not
          in the default set: --shapes builtins; no verts variant).
          --shapes also takes the groups open, closed, scans, builtins.
@@ -31,7 +31,8 @@ Inputs, named SHAPE/VARIANT:
 The data: CGAL's example data is not in the repository and must not be committed. Found
 through --data or the environment variable ENVCRUST_CGAL_DATA (the folder holding `meshes/`);
 when absent the script prints the commands that unpack it from Debian's libcgal-demo.
-The scans: --scans or ENVCRUST_SHARED_DATA, default ../shared/data beside the repository.
+The scans: --scans or the environment variable ENVCRUST_SHARED_DATA (no default; needed only
+for scan: inputs).
 
 Topology "right": the output's Euler characteristic, boundary loop count, orientability and
 number of pieces all equal the truth mesh's (as `envcrust analyze` reads both). Distances are
@@ -462,9 +463,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--data", default=os.environ.get("ENVCRUST_CGAL_DATA"),
                         help="CGAL's example data, the folder holding meshes/ (env ENVCRUST_CGAL_DATA)")
-    parser.add_argument("--scans", default=os.environ.get("ENVCRUST_SHARED_DATA",
-                                                          os.path.join(REPO, "..", "shared", "data")),
-                        help="the shared scans (env ENVCRUST_SHARED_DATA; default ../shared/data)")
+    parser.add_argument("--scans", default=os.environ.get("ENVCRUST_SHARED_DATA"),
+                        help="the folder of the scans (env ENVCRUST_SHARED_DATA)")
     parser.add_argument("--envcrust", default=os.path.join(REPO, "build", "envcrust"))
     parser.add_argument("--afsr", default=os.path.join(REPO, "build", "bench", "afsr_peer"))
     parser.add_argument("--shapes", help="comma-separated shapes (mesh names, scan:NAME, or open/closed/scans); "
@@ -518,8 +518,9 @@ def main():
         if not known:
             sys.exit(f"realshape_table.py: unknown input {name} (shapes: {', '.join(OPEN + CLOSED)}, "
                      f"scan:{', scan:'.join(SCANS)}; variants: {', '.join(MESH_VARIANTS)}, points for scans)")
-    if any(n.startswith("scan:") for n in names) and not os.path.isdir(args.scans):
-        sys.exit(f"realshape_table.py: {args.scans}: no such folder (the scans are not in the repository)")
+    if any(n.startswith("scan:") for n in names) and (not args.scans or not os.path.isdir(args.scans)):
+        sys.exit(f"realshape_table.py: {args.scans or 'no --scans'}: no such folder (the scans are not in the "
+                 "repository; give --scans DIR or set ENVCRUST_SHARED_DATA)")
     if args.list or args.prepare:
         for name in names:
             print(name + ("\t" + "\t".join(make_input(name, args)) if args.prepare else ""))

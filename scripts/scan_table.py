@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Re-measure the real-scan rows of docs/real-scans.md (the scan data is not in the repository;
---data names its folder).
+--data or the environment variable ENVCRUST_SHARED_DATA names its folder).
 
 Runs `envcrust reconstruct` on each scan with the row's flags, one after another, and prints
 one Markdown row per scan: rho, chi, loops, pieces and their genus, both distances (% of the
@@ -67,15 +67,17 @@ def row(binary, data, name):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--binary", default="build/envcrust")
-    parser.add_argument("--data", default="../shared/data")
+    parser.add_argument("--data", default=os.environ.get("ENVCRUST_SHARED_DATA"),
+                        help="the folder of the scans (env ENVCRUST_SHARED_DATA)")
     parser.add_argument("names", nargs="*")
     args = parser.parse_args()
     names = args.names or [n for n in ROWS if n != "face-mesh"]
     unknown = [n for n in names if n not in ROWS]
     if unknown:
         sys.exit(f"scan_table.py: unknown row {', '.join(unknown)} (rows: {', '.join(ROWS)})")
-    if not os.path.isdir(args.data):
-        sys.exit(f"scan_table.py: {args.data}: no such folder (the scans are not in the repository)")
+    if not args.data or not os.path.isdir(args.data):
+        sys.exit(f"scan_table.py: {args.data or 'no --data'}: no such folder (the scans are not in the repository; "
+                 "give --data DIR or set ENVCRUST_SHARED_DATA)")
     print("| scan | flags | ρ | χ | loops | orientable | mesh→truth | truth→mesh | crossings | time, peak |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for name in names:

@@ -19,7 +19,7 @@ namespace {
 struct ExperimentCommand {
   std::string name;
   std::string output;
-  std::string data_dir = "../shared/data";
+  std::string data_dir;  // --data-dir or ENVCRUST_SHARED_DATA; none: the scan experiment is skipped
   std::string scan = "foot_vhacd";
   std::string scan_reference = "foot_open.off";
   std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -67,6 +67,7 @@ nlohmann::json result_json(const experiments::ExperimentResult& r, double render
 // The scan experiment's data: points and, when present, the ground-truth mesh. A missing
 // folder is not an error: the experiment is then skipped with a note.
 std::optional<experiments::ScanData> load_scan(const ExperimentCommand& cmd) {
+  if (cmd.data_dir.empty()) return std::nullopt;
   const std::filesystem::path folder = std::filesystem::path(cmd.data_dir) / cmd.scan;
   const auto points = folder / "points.xyz";
   if (!std::filesystem::exists(points)) return std::nullopt;
@@ -178,8 +179,9 @@ void register_experiment(CLI::App& app) {
   sub->add_flag("--list", cmd->list, "List the experiments and exit");
   sub->add_flag("--quick", cmd->options.use_quick_sizes, "Small sizes (seconds per experiment; for tests)");
   sub->add_option("--seed", cmd->options.seed, "Seed of every sampling and perturbation")->check(seed_number())->capture_default_str();
-  sub->add_option("--data-dir", cmd->data_dir, "Folder of the shared scan data (scan experiment)")
-      ->capture_default_str();
+  sub->add_option("--data-dir", cmd->data_dir,
+                  "Folder of the scan data (scan experiment; none given: the experiment is skipped)")
+      ->envname("ENVCRUST_SHARED_DATA");
   sub->add_option("--scan", cmd->scan, "Data set folder under --data-dir for the scan experiment (points.xyz)")
       ->capture_default_str();
   sub->add_option("--scan-reference", cmd->scan_reference,

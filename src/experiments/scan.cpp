@@ -45,7 +45,8 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
   ExperimentResult out;
   if (!options.scan) {
     out.is_skipped = true;
-    out.notes.push_back("skipped: no scan data (the CLI reads ../shared/data/foot_vhacd; give --data-dir)");
+    out.notes.push_back("skipped: no scan data (the CLI reads DIR/foot_vhacd/points.xyz: give --data-dir DIR or set "
+        "ENVCRUST_SHARED_DATA=DIR)");
     return out;
   }
   const ScanData& scan = *options.scan;

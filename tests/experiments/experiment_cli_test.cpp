@@ -1,7 +1,9 @@
 // `envcrust experiment`: listing, a quick run into a folder, and its usage errors.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli/run_command.h"
@@ -33,8 +35,8 @@ TEST_F(ExperimentCli, list_names_every_experiment_with_its_figures) {
 TEST_F(ExperimentCli, help_shows_the_defaults_and_the_common_flags) {
   const auto r = run_envcrust("experiment --help");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const std::string flag : {"--quick", "--seed UINT=1", "--data-dir TEXT=../shared/data", "--panel-width INT:INT in [16 - 8192]=320",
-                                 "--json", "--quiet"})
+  for (const std::string flag : {"--quick", "--seed UINT=1", "--data-dir TEXT (Env:ENVCRUST_SHARED_DATA)",
+                                 "--panel-width INT:INT in [16 - 8192]=320", "--json", "--quiet"})
     EXPECT_NE(r.out.find(flag), std::string::npos) << flag;
 }
 
@@ -80,6 +82,28 @@ TEST_F(ExperimentCli, scan_without_data_is_skipped_not_failed) {
   const auto json = nlohmann::json::parse(r.out);
   EXPECT_EQ(json["experiments"][0]["skipped"], true);
   EXPECT_TRUE(std::filesystem::exists(dir_ / "scan" / "results.json"));
+}
+
+// No default folder: without --data-dir or ENVCRUST_SHARED_DATA the scan is skipped with a note
+// saying how to give the data; the variable, when set, is the folder read.
+TEST_F(ExperimentCli, scan_data_comes_from_the_flag_or_the_variable_only) {
+  ::unsetenv("ENVCRUST_SHARED_DATA");
+  auto r = run_envcrust("experiment scan --quick --no-figures --json -o " + dir_.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["experiments"][0]["skipped"], true);
+  const std::string note = json["experiments"][0]["notes"][0];
+  EXPECT_NE(note.find("--data-dir DIR or set ENVCRUST_SHARED_DATA=DIR"), std::string::npos) << note;
+
+  // A points file that is not one: the error names the file under the variable's folder.
+  const auto data = dir_ / "data";
+  std::filesystem::create_directories(data / "foot_vhacd");
+  std::ofstream(data / "foot_vhacd" / "points.xyz") << "not a point\n";
+  ::setenv("ENVCRUST_SHARED_DATA", data.c_str(), 1);
+  r = run_envcrust("experiment scan --quick --no-figures --scan-reference '' -q -o " + (dir_ / "out").string());
+  ::unsetenv("ENVCRUST_SHARED_DATA");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find((data / "foot_vhacd" / "points.xyz").string()), std::string::npos) << r.err;
 }
 
 TEST_F(ExperimentCli, unknown_experiment_is_a_usage_error_naming_the_known_ones) {
