@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "curve_output.h"
 #include "inputs.h"
+#include "output_vertex_data.h"
 #include "reconstruct_hints.h"
 #include "reconstruct_output.h"
 #include "rho_support.h"
@@ -342,9 +343,11 @@ void run_reconstruct(ReconstructCommand& cmd) {
   const std::vector<std::string> hints =
       report ? scan_hints(loaded, result_options, *report, unresolved_curves, result.envelope) : std::vector<std::string>{};
   j["hints"] = hints;
+  const io::MeshVertexData vertex_data = output_vertex_data(result.mesh, loaded);
+  j["output_vertex_data"] = vertex_data_json(vertex_data);
   // Every output is written once nothing can fail any more, so a failed run leaves none.
   const std::string report_text = json_text(j);
-  io::write_mesh(cmd.output, result.mesh);
+  io::write_mesh(cmd.output, result.mesh, vertex_data);
   if (!cmd.envelope_output.empty()) {
     PointSet env;
     for (const auto& s : result.envelope.samples) {
@@ -419,7 +422,12 @@ void register_reconstruct(CLI::App& app) {
       "Reconstruct a surface with boundary through its rho-envelope (the main job), then\n"
       "report the result's topology, boundary knots and distances");
   add_input_options(*sub, *cmd);
-  sub->add_option("-o,--output", cmd->output, "Output mesh (.ply/.off/.obj)")->required();
+  sub->add_option("-o,--output", cmd->output,
+                  "Output mesh: .ply (float positions, vertex normals, and the input's colours as uchar red green "
+                  "blue and other columns as float properties, each vertex taking its nearest input point's), "
+                  ".obj (normals, colours), .off or .stl (the mesh alone). Normals come from the faces; on a "
+                  "non-orientable result (a Moebius band) their sign flips across a seam")
+      ->required();
   const std::map<std::string, pipeline::Method> methods = {{"envelope", pipeline::Method::Envelope},
                                                            {"powercrust", pipeline::Method::PowerCrust}};
   sub->add_option("--method", cmd->options.method, "envelope (default) or powercrust (direct, for comparison)")

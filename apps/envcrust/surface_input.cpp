@@ -178,14 +178,24 @@ bool columns_look_like_colours(const std::string& spec, const std::vector<Vector
   return above_one;
 }
 
+// Six columns of colours read as normals become the points' colours.
+void normals_to_colours(PointSet& read, PointAttributes& attributes) {
+  attributes.colours.clear();
+  for (const Vector3& n : read.normals)
+    attributes.colours.push_back({static_cast<std::uint8_t>(n.x()), static_cast<std::uint8_t>(n.y()),
+                                  static_cast<std::uint8_t>(n.z())});
+  read.normals.clear();
+}
+
 // The points of a point file as the stages need them: normals scaled to unit length (files
 // store them at any length; the envelope offsets by rho times the normal) and a zero one
 // refused, and repeated points merged (scans repeat points where views overlap; a copy would
-// read as a zero spacing), each keeping its first occurrence's normal; refused with the
-// file's name when fewer than 5 are left or all lie on a line.
-PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::string>& notes) {
+// read as a zero spacing), each keeping its first occurrence's normal and attributes; refused
+// with the file's name when fewer than 5 are left or all lie on a line.
+AttributedPoints usable_points(AttributedPoints input, const std::string& spec, std::vector<std::string>& notes) {
+  PointSet& read = input.points;
   if (columns_look_like_colours(spec, read.normals)) {
-    read.normals.clear();
+    normals_to_colours(read, input.attributes);
     notes.push_back("columns 4-6 are whole numbers in 0..255 on every line: read as colours, not normals");
   } else if (!read.normals.empty() && std::all_of(read.normals.begin(), read.normals.end(),
                                                   [](const Vector3& n) { return n == Vector3(0, 0, 0); })) {
@@ -200,12 +210,18 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
     read.normals[i] = read.normals[i] / length;
   }
   mesh::MergedPoints merged = naming_input(spec, [&] { return mesh::merge_duplicate_points(read.points); });
-  PointSet out;
+  AttributedPoints result;
+  PointSet& out = result.points;
   out.points = std::move(merged.points);
   if (read.has_normals()) {
     std::vector<char> seen(out.points.size(), 0);
     for (std::size_t i = 0; i < read.points.size(); ++i)
       if (const Index k = merged.input_to_merged[i]; !seen[k]) seen[k] = 1, out.normals.push_back(read.normals[i]);
+  }
+  if (!input.attributes.empty()) {
+    std::vector<std::size_t> first(out.points.size(), read.points.size());  // the input point of each merged one
+    for (std::size_t i = read.points.size(); i-- > 0;) first[merged.input_to_merged[i]] = i;
+    result.attributes = input.attributes.pick(first);
   }
   if (merged.duplicates > 0) notes.push_back(std::to_string(merged.duplicates) + " duplicate points merged");
   const std::size_t n = out.points.size();
@@ -221,15 +237,16 @@ PointSet usable_points(PointSet read, const std::string& spec, std::vector<std::
       << diagonal << "): no surface to reconstruct";
     throw DegenerateInput(s.str());
   }
-  return out;
+  return result;
 }
 
 // Samples of M from a point set read from `spec` (a file, or a built-in surface's samples):
 // usable points, normal lines from the set or by PCA, and boundary curves given, detected or
 // none.
-void load_point_samples(PointSet read, const std::string& spec, const BuiltinSampling& sampling,
+void load_point_samples(AttributedPoints read, const std::string& spec, const BuiltinSampling& sampling,
                         const Progress& progress, LoadedSurface& out) {
-  PointSet points = usable_points(std::move(read), spec, out.notes);
+  AttributedPoints usable = usable_points(std::move(read), spec, out.notes);
+  PointSet& points = usable.points;
   out.source = "points";
   // One neighbour search serves the stray samples, the normal lines and the boundary's
   // angle gaps (each searched its own: at 1M points the passes took 7.4-8.8 s, now 4.9-5.7 s).
@@ -254,15 +271,18 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
       for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = found.is_outlier[i] ? 0 : 1;
       table = table.subset(points.points, keep);
       PointSet kept;
+      std::vector<std::size_t> kept_indices;
       for (std::size_t i = 0; i < points.points.size(); ++i) {
         if (found.is_outlier[i]) {
           out.outliers.push_back(points.points[i]);
           continue;
         }
         kept.points.push_back(points.points[i]);
+        kept_indices.push_back(i);
         if (points.has_normals()) kept.normals.push_back(points.normals[i]);
       }
       points = std::move(kept);
+      if (!usable.attributes.empty()) usable.attributes = usable.attributes.pick(kept_indices);
       out.notes.push_back(std::to_string(found.count()) + " outliers removed (" + std::to_string(found.off_plane) +
                           " off their neighbours' plane, " + std::to_string(found.isolated) + " isolated)");
     }
@@ -301,6 +321,10 @@ void load_point_samples(PointSet read, const std::string& spec, const BuiltinSam
     out.kind.are_normals_estimated = true;
     out.notes.push_back("normal lines estimated by PCA over " + std::to_string(normal_options.neighbors) +
                         " neighbours");
+  }
+  if (!usable.attributes.empty()) {
+    out.attribute_points = points.points;
+    out.attributes = std::move(usable.attributes);
   }
   out.samples.points = std::move(points.points);
   out.samples.normals = std::move(points.normals);
@@ -419,7 +443,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     o.with_normals = !sampling.builtin_as_points;
     PointSet points = model->sample(o);
     if (sampling.builtin_as_points) {
-      load_point_samples(std::move(points), spec, sampling, progress, out);
+      load_point_samples({std::move(points), {}}, spec, sampling, progress, out);
       out.notes.push_back("sampled from " + model->name() + " without its normals and boundary");
       return out;
     }
@@ -449,7 +473,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     for (std::size_t v = 0; v < used.size(); ++v)
       if (used[v]) vertices.points.push_back(mesh->vertices[v]);
     const std::size_t count = vertices.points.size();
-    load_point_samples(std::move(vertices), spec, sampling, progress, out);
+    load_point_samples({std::move(vertices), {}}, spec, sampling, progress, out);
     out.notes.insert(out.notes.begin(), "the mesh's " + std::to_string(count) + " vertices read as a point file (--as-points)");
     return out;
   }
@@ -457,12 +481,19 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     if (!sampling.boundary_files.empty())
       throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
     load_mesh_samples(std::move(*mesh), spec, sampling.join_creases, out);
+    if (ext == "ply") {  // a PLY mesh's vertex colours and properties
+      AttributedPoints vertices = io::read_attributed_points(spec);
+      if (!vertices.attributes.empty()) {
+        out.attribute_points = std::move(vertices.points.points);
+        out.attributes = std::move(vertices.attributes);
+      }
+    }
     return out;
   }
   if (sampling.mesh_as_points) throw UsageError("--as-points applies to mesh files: " + spec + " has no faces");
   // A point file's steps before the envelope take seconds on a million points.
   progress.report("input: reading", 0.0);
-  load_point_samples(io::read_points(spec), spec, sampling, progress, out);
+  load_point_samples(io::read_attributed_points(spec), spec, sampling, progress, out);
   progress.report("input", 1.0);
   return out;
 }

@@ -2,6 +2,7 @@
 // boundary curves): a built-in surface, a point file, or a triangle mesh.
 #pragma once
 
+#include "envcrust/attributes.h"
 #include "envcrust/boundary.h"
 #include "envcrust/envelope.h"
 #include "envcrust/models.h"
@@ -62,6 +63,10 @@ struct LoadedSurface {
   std::vector<std::string> warnings;
   /// Point files: the stray samples removed (see BuiltinSampling::remove_outliers).
   std::vector<Point3> outliers;
+  /// Colours and scalars of the input's points (point files: the samples kept; PLY meshes:
+  /// the vertices), at `attribute_points`, for the output's vertices (nearest point's).
+  std::vector<Point3> attribute_points;
+  PointAttributes attributes;
 };
 
 /// Add the point-file boundary flags shared by reconstruct, envelope and boundary: --boundary,

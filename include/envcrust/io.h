@@ -1,6 +1,7 @@
 // File formats at the edge of the library: reading and writing point sets and meshes.
 #pragma once
 
+#include "envcrust/attributes.h"
 #include "envcrust/image.h"
 #include "envcrust/nurbs_surface.h"
 #include "envcrust/types.h"
@@ -16,15 +17,23 @@ namespace envcrust::io {
 
 /// Read a point set, format chosen by extension (case-insensitive):
 ///  - `.xyz/.pts/.txt/.csv`: fields separated by white space or commas; `#` comments and
-///    blank lines allowed. Either 3 or 6 numbers per line (position, optional normal), or
-///    any columns under a first line that names them (x, y, z required; nx, ny, nz read
-///    when named; the others skipped). `.pts` also skips Leica's point-count lines and reads
-///    x y z intensity [r g b] lines as positions. Every data line has the first's column count.
-///  - `.ply`: ascii or binary (little/big endian), vertex x,y,z and optional nx,ny,nz.
-///  - `.off/.obj/.stl`: the vertices of the mesh (normals: none).
+///    blank lines allowed. Every data line has the first's column count. Without a header
+///    line: x y z, then 4 columns x y z intensity, 6 x y z nx ny nz, 7 x y z intensity r g b,
+///    9 x y z nx ny nz r g b (or x y z r g b nx ny nz: the triple of whole numbers 0..255 is
+///    the colour), any other count x y z and scalars column_4, column_5, ... Under a first
+///    line that names the columns: x, y, z required; nx, ny, nz and r, g, b (or red, green,
+///    blue) read when all three are named; every other column a scalar of its name (dropped
+///    if some value in it is not a number). `.pts` also skips Leica's point-count lines.
+///  - `.ply`: ascii or binary (little/big endian), vertex x,y,z and optional nx,ny,nz;
+///    red, green, blue (integer 0..255, 16-bit scaled down, float 0..1) as colours; every
+///    other non-list vertex property (alpha, intensity, ...) a scalar of its name.
+///  - `.off/.obj/.stl`: the vertices of the mesh (normals and attributes: none).
 /// @throws IoError one line naming the file and the problem, e.g.
-///   "scan.xyz:12: expected 3 or 6 numbers, got 2", "scan.ply: truncated binary data
+///   "scan.xyz:12: expected at least 3 numbers ..., got 2", "scan.ply: truncated binary data
 ///   (vertex 17 of 100)", "a.xyz:3: non-finite coordinate", "a.xyz: no points".
+AttributedPoints read_attributed_points(const std::filesystem::path& path);
+
+/// read_attributed_points without the attributes.
 PointSet read_points(const std::filesystem::path& path);
 
 /// Read the NURBS patches of a file, format chosen by extension: `.igs/.iges` (IGES: every
@@ -58,10 +67,27 @@ Polyline read_polyline(const std::filesystem::path& path);
 /// Encoding of written PLY files.
 enum class PlyEncoding { Binary, Ascii };
 
-/// Write a triangle mesh; format by extension: `.ply` (binary by default), `.off`, `.obj`.
+/// Write a triangle mesh; format by extension: `.ply` (binary by default, double x, y, z),
+/// `.off`, `.obj`, `.stl` (binary).
 /// Written atomically (temp file in the same folder, then rename).
 /// @throws IoError on unknown extension or a failed write.
 void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh,
+                PlyEncoding encoding = PlyEncoding::Binary);
+
+/// What a mesh file holds per vertex besides its position (write_mesh with vertex data).
+struct MeshVertexData {
+  std::vector<Vector3> normals;  ///< empty or one per vertex
+  PointAttributes attributes;    ///< colours and scalars: empty or one per vertex
+};
+
+/// Write a triangle mesh with per-vertex data; format by extension:
+///  - `.ply`: float32 x, y, z (float64 where float32 would round a coordinate by more than
+///    1e-6 of the mesh's diagonal: far from the origin for its size, as georeferenced scans
+///    are), float nx, ny, nz, uchar red, green, blue and a float property per scalar;
+///  - `.obj`: `vn` normals, colours as "v x y z r g b" (0..1, as MeshLab writes); no scalars;
+///  - `.off`: positions only; `.stl` (binary): each face with its normal, no vertex data.
+/// Written atomically. @throws IoError on unknown extension, data of the wrong size or a failed write.
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, const MeshVertexData& data,
                 PlyEncoding encoding = PlyEncoding::Binary);
 
 /// Write a point set (with normals if present): `.xyz` (ascii) or `.ply` (binary by default).
@@ -88,7 +114,7 @@ void remove_pending_temp_files() noexcept;
 
 /// What an output file is written as, for check_output_path.
 enum class OutputKind {
-  Mesh,    ///< write_mesh: .ply, .off, .obj
+  Mesh,    ///< write_mesh: .ply, .off, .obj, .stl
   Points,  ///< write_points: .xyz, .ply
   Image,     ///< write_png: .png
   Polyline,  ///< write_polyline: .polyline, .xyz

@@ -160,7 +160,7 @@ void check_output_path(const std::filesystem::path& path, OutputKind kind) {
     detail::unknown_extension(path, listed);
   };
   switch (kind) {
-    case OutputKind::Mesh: expect({"ply", "off", "obj"}, ".ply, .off, .obj"); break;
+    case OutputKind::Mesh: expect({"ply", "off", "obj", "stl"}, ".ply, .off, .obj, .stl"); break;
     case OutputKind::Points: expect({"xyz", "ply"}, ".xyz, .ply"); break;
     case OutputKind::Image: expect({"png"}, ".png"); break;
     case OutputKind::Polyline: expect({"polyline", "xyz"}, ".polyline, .xyz"); break;

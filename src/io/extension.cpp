@@ -43,7 +43,7 @@ bool is_text_point_file(const std::filesystem::path& path) {
   return extension == "xyz" || extension == "pts" || extension == "txt" || extension == "csv";
 }
 
-PointSet read_points(const std::filesystem::path& path) {
+AttributedPoints read_attributed_points(const std::filesystem::path& path) {
   const std::string extension = extension_of(path);
   if (is_text_point_file(path)) {
     return detail::read_xyz(path);
@@ -55,10 +55,15 @@ PointSet read_points(const std::filesystem::path& path) {
   if (mesh.vertices.empty()) {
     detail::fail(path, "no points");
   }
-  PointSet result;
-  result.points = std::move(mesh.vertices);
-  result.normals = std::move(mesh.normals);
+  AttributedPoints result;
+  result.points.points = std::move(mesh.vertices);
+  result.points.normals = std::move(mesh.normals);
+  result.attributes = std::move(mesh.attributes);
   return result;
+}
+
+PointSet read_points(const std::filesystem::path& path) {
+  return read_attributed_points(path).points;
 }
 
 PolygonMesh read_polygon_mesh(const std::filesystem::path& path) {

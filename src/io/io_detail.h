@@ -1,6 +1,7 @@
 // Private helpers shared by the io readers and writers: error formatting, file slurping, number parsing.
 #pragma once
 
+#include "envcrust/attributes.h"
 #include "envcrust/errors.h"
 #include "envcrust/nurbs_surface.h"
 #include "envcrust/types.h"
@@ -114,13 +115,14 @@ struct RawMesh {
   std::vector<std::vector<Index>> faces;
   std::vector<double> radii;   ///< PLY vertex property `radius`: empty or one per vertex
   std::vector<double> labels;  ///< PLY vertex property `label`: empty or one per vertex
+  PointAttributes attributes;  ///< PLY vertex colours and other scalar properties
 };
 
 RawMesh read_ply(const std::filesystem::path& path);
 RawMesh read_off(const std::filesystem::path& path);
 RawMesh read_obj(const std::filesystem::path& path);
 RawMesh read_stl(const std::filesystem::path& path);
-PointSet read_xyz(const std::filesystem::path& path);
+AttributedPoints read_xyz(const std::filesystem::path& path);
 /// The rational B-spline surfaces of an IGES file, trimmed or not (read_nurbs_patches).
 std::vector<surfaces::NurbsPatch> read_iges_patches(const std::filesystem::path& path);
 
@@ -141,6 +143,16 @@ void append_little_endian(std::string& out, T value) {
 /// Throw IoError unless every coordinate is finite (a written NaN could not be read back).
 void check_finite(const std::filesystem::path& path, const std::vector<Point3>& points,
                   const char* what);
+
+/// Throw IoError unless the mesh can be written: finite vertices, triangles' indices in
+/// range, and (`int32_indices`) at most 2^31 - 1 vertices.
+void check_mesh(const std::filesystem::path& path, const TriangleMesh& mesh, bool int32_indices);
+
+/// The mesh as OFF text (positions and faces).
+void write_off(std::ostream& out, const TriangleMesh& mesh);
+
+/// The mesh as binary STL (each face with its normal; STL holds no vertex data).
+void write_stl(std::ostream& out, const TriangleMesh& mesh);
 
 /// Largest vertex count an Index can address.
 inline constexpr std::uint64_t max_vertices = 0xFFFFFFFFull;

@@ -1,4 +1,5 @@
-// Reader of PLY bodies (ascii, binary little and big endian): vertices, normals and faces.
+// Reader of PLY bodies (ascii, binary little and big endian): vertices, normals, colours and
+// other vertex properties (kept as attributes), and faces.
 //
 // We parse PLY (and OFF, OBJ, STL, xyz) ourselves instead of using CGAL's readers because
 // those only report "failed", without the file, the line or the problem; users of a
@@ -7,6 +8,7 @@
 #include "ply_header.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -172,7 +174,49 @@ struct Layout {
   bool has_normals = false;
   std::optional<std::size_t> face_indices;
   std::optional<std::size_t> radius, label;  ///< balls (`envcrust powercrust --poles`)
+  std::optional<std::array<std::size_t, 3>> colour;  ///< red, green, blue
+  /// Every other scalar vertex property, kept as an attribute: (property, scalar column).
+  std::vector<std::pair<std::size_t, std::size_t>> scalars;
 };
+
+// A colour channel as 0..255: integers as they are (16-bit ones scaled down), floats from 0..1.
+std::uint8_t colour_channel(double value, PlyType type) {
+  double scaled = value;
+  if (type == PlyType::UInt16) scaled = value / 257.0;
+  if (!ply_type_is_integer(type)) scaled = value * 255.0;
+  if (!(scaled > 0)) return 0;  // also NaN
+  return static_cast<std::uint8_t>(std::lround(std::min(scaled, 255.0)));
+}
+
+// The colour properties (red green blue, as most writers name them; r g b; diffuse_red ...) and
+// every other scalar that no role takes, as attributes named like the property.
+void find_attributes(const PlyElement& element, Layout& layout, PointAttributes& attributes) {
+  static constexpr const char* colour_names[3][3] = {
+      {"red", "r", "diffuse_red"}, {"green", "g", "diffuse_green"}, {"blue", "b", "diffuse_blue"}};
+  for (const auto& spelling : {0, 1, 2}) {
+    std::array<std::size_t, 3> channels{};
+    bool all = true;
+    for (int c = 0; c < 3; ++c) {
+      const auto index = find_property(element, colour_names[c][spelling]);
+      all = all && index && !element.properties[*index].is_list;
+      if (index) channels[c] = *index;
+    }
+    if (all) {
+      layout.colour = channels;
+      break;
+    }
+  }
+  for (std::size_t p = 0; p < element.properties.size(); ++p) {
+    const bool is_coordinate = std::find(std::begin(layout.coordinate), std::end(layout.coordinate), p) !=
+                               std::end(layout.coordinate);
+    const bool is_normal = layout.has_normals && (p == layout.normal[0] || p == layout.normal[1] || p == layout.normal[2]);
+    const bool is_colour = layout.colour && std::find(layout.colour->begin(), layout.colour->end(), p) != layout.colour->end();
+    if (is_coordinate || is_normal || is_colour || element.properties[p].is_list) continue;
+    layout.scalars.emplace_back(p, attributes.names.size());
+    attributes.names.push_back(element.properties[p].name);
+  }
+  attributes.scalars.resize(attributes.names.size());
+}
 
 Layout check_vertex_element(const std::filesystem::path& path, const PlyElement& element) {
   Layout layout;
@@ -278,7 +322,11 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
   if (vertex_element == nullptr) {
     fail(path, "bad PLY header: no 'vertex' element");
   }
-  const Layout layout = check_vertex_element(path, *vertex_element);
+  Layout layout = check_vertex_element(path, *vertex_element);
+  find_attributes(*vertex_element, layout, mesh.attributes);
+  // Scalar column of each vertex property (none: npos), so a record's values land in one look-up.
+  std::vector<std::size_t> scalar_column(vertex_element->properties.size(), std::string::npos);
+  for (const auto& [property, column] : layout.scalars) scalar_column[property] = column;
   const std::uint64_t vertex_count = vertex_element->count;
 
   for (const PlyElement& element : header.elements) {
@@ -306,6 +354,8 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
       }
       if (layout.radius) mesh.radii.reserve(capacity);
       if (layout.label) mesh.labels.reserve(capacity);
+      if (layout.colour) mesh.attributes.colours.reserve(capacity);
+      for (auto& column : mesh.attributes.scalars) column.reserve(capacity);
     } else if (is_face) {
       mesh.faces.reserve(capacity);
     }
@@ -313,6 +363,7 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
       position.index = record;
       double coordinate[3] = {};
       double normal[3] = {};
+      Colour colour{};
       std::vector<Index> face;
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const PlyProperty& property = element.properties[p];
@@ -327,6 +378,11 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
         const double value = source.scalar(property.type);
         if (p == layout.radius) mesh.radii.push_back(value);
         if (p == layout.label) mesh.labels.push_back(value);
+        if (scalar_column[p] != std::string::npos)
+          mesh.attributes.scalars[scalar_column[p]].push_back(static_cast<float>(value));
+        if (layout.colour)
+          for (int c = 0; c < 3; ++c)
+            if (p == (*layout.colour)[c]) colour[static_cast<std::size_t>(c)] = colour_channel(value, property.type);
         for (int axis = 0; axis < 3; ++axis) {
           if (p == layout.coordinate[axis]) {
             coordinate[axis] = value;
@@ -347,6 +403,7 @@ RawMesh read_body(const std::filesystem::path& path, const PlyHeader& header, So
         if (layout.has_normals) {
           mesh.normals.emplace_back(normal[0], normal[1], normal[2]);
         }
+        if (layout.colour) mesh.attributes.colours.push_back(colour);
       } else if (is_face) {
         mesh.faces.push_back(std::move(face));
       }

@@ -75,7 +75,7 @@ Polyline read_polyline(const std::filesystem::path& path) {
   if (extension == "polyline") {
     curve = read_polyline_file(path);
   } else if (is_text_point_file(path)) {
-    curve = detail::read_xyz(path).points;
+    curve = detail::read_xyz(path).points.points;
   } else {
     detail::unknown_extension(path, ".polyline, .xyz, .txt, .pts, .csv");
   }

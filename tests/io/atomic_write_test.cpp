@@ -141,7 +141,7 @@ TEST_F(AtomicWrite, output_paths_are_checked_before_anything_is_written) {
   EXPECT_NO_THROW(check_output_path("relative.png", OutputKind::Image));  // the current folder
   const auto mesh = path("m.xyz");
   EXPECT_EQ(io_error_of([&] { check_output_path(mesh, OutputKind::Mesh); }),
-            mesh.string() + ": unknown extension '.xyz' (expected .ply, .off, .obj)");
+            mesh.string() + ": unknown extension '.xyz' (expected .ply, .off, .obj, .stl)");
   const auto points = path("p.off");
   EXPECT_EQ(io_error_of([&] { check_output_path(points, OutputKind::Points); }),
             points.string() + ": unknown extension '.off' (expected .xyz, .ply)");

@@ -38,9 +38,9 @@ TEST_F(Extension, read_polygon_mesh_names_unknown_extension) {
 
 TEST_F(Extension, writers_name_unknown_extension) {
   const TriangleMesh mesh{{Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)}, {{0, 1, 2}}};
-  const auto mesh_file = path("a.stl");
+  const auto mesh_file = path("a.stp");
   EXPECT_EQ(io_error_of([&] { write_mesh(mesh_file, mesh); }),
-            mesh_file.string() + ": unknown extension '.stl' (expected .ply, .off, .obj)");
+            mesh_file.string() + ": unknown extension '.stp' (expected .ply, .off, .obj, .stl)");
   const auto points_file = path("a.off");
   EXPECT_EQ(io_error_of([&] { write_points(points_file, PointSet{{Point3(0, 0, 0)}, {}}); }),
             points_file.string() + ": unknown extension '.off' (expected .xyz, .ply)");

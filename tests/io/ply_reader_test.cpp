@@ -122,6 +122,37 @@ TEST_F(PlyReader, reads_binary_big_endian_mesh_with_double_coordinates) {
   EXPECT_EQ(mesh.faces[1], (std::vector<Index>{0, 1, 2, 3}));
 }
 
+// Colours (uchar, 16-bit, float) and every other scalar vertex property are attributes named
+// like the property; lists are not.
+TEST_F(PlyReader, reads_colours_and_keeps_other_vertex_properties_as_scalars) {
+  const auto ascii = write("a.ply",
+                           "ply\nformat ascii 1.0\nelement vertex 2\n"
+                           "property float x\nproperty float y\nproperty float z\n"
+                           "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                           "property float intensity\nproperty list uchar int tags\nproperty short scan_id\n"
+                           "end_header\n"
+                           "0 0 0 255 128 0 200 0.5 2 1 2 7\n"
+                           "1 0 0 1 2 3 255 -1 0 -3\n");
+  const AttributedPoints points = read_attributed_points(ascii);
+  ASSERT_EQ(points.points.size(), 2U);
+  ASSERT_TRUE(points.attributes.has_colours());
+  EXPECT_EQ(points.attributes.colours[0], (Colour{255, 128, 0}));
+  EXPECT_EQ(points.attributes.colours[1], (Colour{1, 2, 3}));
+  EXPECT_EQ(points.attributes.names, (std::vector<std::string>{"alpha", "intensity", "scan_id"}));
+  EXPECT_EQ(points.attributes.scalars[1], (std::vector<float>{0.5F, -1.0F}));
+  EXPECT_EQ(points.attributes.scalars[2], (std::vector<float>{7.0F, -3.0F}));
+  // float colours in 0..1 and 16-bit ones, binary
+  const auto binary = write("b.ply", Bytes()
+                                         .text("ply\nformat binary_little_endian 1.0\nelement vertex 1\n"
+                                               "property float x\nproperty float y\nproperty float z\n"
+                                               "property float red\nproperty float green\nproperty ushort blue\n"
+                                               "end_header\n")
+                                         .put(1.0F).put(2.0F).put(3.0F)
+                                         .put(1.0F).put(0.5F).put(std::uint16_t{65535})
+                                         .str());
+  EXPECT_EQ(read_attributed_points(binary).attributes.colours.at(0), (Colour{255, 128, 255}));
+}
+
 TEST_F(PlyReader, reports_truncated_binary_vertex_data) {
   std::string data = little_endian_cloud();
   data.resize(data.find("end_header\n") + 11 + 30);  // inside the first vertex's normal

@@ -53,16 +53,49 @@ TEST_F(PointReader, reads_doubles_exactly) {
   EXPECT_EQ(points.points[0].z(), 123456789.123456789);
 }
 
-TEST_F(PointReader, reports_line_of_wrong_column_count) {
+constexpr const char* kTooFew =
+    "expected at least 3 numbers (x y z, then optional columns: nx ny nz, intensity, r g b, ...), got ";
+
+TEST_F(PointReader, reports_line_of_too_few_columns) {
   const auto file = write("a.xyz", "# comment\n\n1 2\n");
-  EXPECT_EQ(io_error_of([&] { read_points(file); }),
-            file.string() + ":3: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 2: other columns "
-                            "(intensity, colour) are not read; keep the first 3 or 6, or name the columns in a header line (x y z ...)");
-  // x y z intensity, as scanners export them
-  const auto four = write("b.xyz", "1 2 3 0.5\n");
-  EXPECT_EQ(io_error_of([&] { read_points(four); }),
-            four.string() + ":1: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 4: other columns "
-                            "(intensity, colour) are not read; keep the first 3 or 6, or name the columns in a header line (x y z ...)");
+  EXPECT_EQ(io_error_of([&] { read_points(file); }), file.string() + ":3: " + kTooFew + "2");
+}
+
+// x y z intensity, as scanners export them: the fourth column is a scalar attribute.
+TEST_F(PointReader, four_columns_are_a_position_and_an_intensity) {
+  const AttributedPoints four = read_attributed_points(write("b.xyz", "1 2 3 0.5\n4 5 6 -7\n"));
+  ASSERT_EQ(four.points.size(), 2U);
+  EXPECT_FALSE(four.points.has_normals());
+  testing::expect_same_point(Point3(4, 5, 6), four.points.points[1]);
+  EXPECT_FALSE(four.attributes.has_colours());
+  ASSERT_EQ(four.attributes.names, std::vector<std::string>{"intensity"});
+  EXPECT_EQ(four.attributes.scalars[0], (std::vector<float>{0.5F, -7.0F}));
+  EXPECT_EQ(read_points(write("c.xyz", "1 2 3 0.5\n")).size(), 1U);  // read_points drops it
+}
+
+// Column counts with no common meaning: x y z, then scalars named by their column.
+TEST_F(PointReader, other_column_counts_keep_their_columns_as_scalars) {
+  const AttributedPoints five = read_attributed_points(write("a.txt", "1 2 3 10 20\n"));
+  EXPECT_EQ(five.attributes.names, (std::vector<std::string>{"column_4", "column_5"}));
+  EXPECT_EQ(five.attributes.scalars[1], std::vector<float>{20.0F});
+  // seven columns outside .pts too: x y z intensity r g b when the last three are colours
+  const AttributedPoints seven = read_attributed_points(write("b.txt", "1 2 3 0.1 0.5 0.5 0.5\n"));
+  EXPECT_FALSE(seven.attributes.has_colours());
+  EXPECT_EQ(seven.attributes.names, (std::vector<std::string>{"intensity", "column_5", "column_6", "column_7"}));
+}
+
+// Nine columns: normals and colours, the triple of whole numbers 0..255 being the colour.
+TEST_F(PointReader, nine_columns_are_normals_and_colours_in_either_order) {
+  const AttributedPoints after = read_attributed_points(write("a.xyz", "1 2 3 0 0 1 255 128 0\n4 5 6 0 1 0 1 2 3\n"));
+  ASSERT_TRUE(after.points.has_normals());
+  EXPECT_EQ(after.points.normals[1], Vector3(0, 1, 0));
+  ASSERT_TRUE(after.attributes.has_colours());
+  EXPECT_EQ(after.attributes.colours[0], (Colour{255, 128, 0}));
+  EXPECT_TRUE(after.attributes.names.empty());
+  // CloudCompare's x y z r g b nx ny nz
+  const AttributedPoints before = read_attributed_points(write("b.xyz", "1 2 3 255 128 0 0 0 1\n"));
+  EXPECT_EQ(before.points.normals.at(0), Vector3(0, 0, 1));
+  EXPECT_EQ(before.attributes.colours.at(0), (Colour{255, 128, 0}));
 }
 
 // Files exported as comma-separated values read the same, with or without spaces.
@@ -73,8 +106,7 @@ TEST_F(PointReader, reads_comma_separated_columns) {
   testing::expect_same_point(Point3(4, 5.5, 6), points.points[1]);
   EXPECT_EQ(points.normals[1], Vector3(0, 1, 0));
   const auto empty_field = write("b.xyz", "1,2,,3\n");
-  EXPECT_EQ(io_error_of([&] { read_points(empty_field); }), empty_field.string() + ":1: expected 3 or 6 numbers "
-            "(x y z, or x y z nx ny nz), got 4: other columns (intensity, colour) are not read; keep the first 3 or 6, or name the columns in a header line (x y z ...)");
+  EXPECT_EQ(io_error_of([&] { read_points(empty_field); }), empty_field.string() + ":1: expected a number, got ''");
   const auto missing = write("c.xyz", "1,,3\n");
   EXPECT_EQ(io_error_of([&] { read_points(missing); }), missing.string() + ":1: expected a number, got ''");
 }
@@ -96,6 +128,20 @@ TEST_F(PointReader, a_header_line_names_the_columns_and_the_others_are_skipped) 
   testing::expect_same_point(Point3(1, 2, 3), reordered.points[0]);
   const PointSet spelled = read_points(write("c.xyz", "x y z normal_x normal_y normal_z\n0 0 0 1 0 0\n"));
   EXPECT_EQ(spelled.normals.at(0), Vector3(1, 0, 0));
+  // the colour and the other numeric columns are attributes; a column of text is none
+  const AttributedPoints attributed = read_attributed_points(write("f.csv",
+                                                                   "X,Y,Z,Red,Green,Blue,Intensity,Class\n"
+                                                                   "1,2,3,255,0,7,0.5,ground\n"
+                                                                   "4,5,6,0,255,0,0.25,tree\n"));
+  ASSERT_TRUE(attributed.attributes.has_colours());
+  EXPECT_EQ(attributed.attributes.colours[0], (Colour{255, 0, 7}));
+  EXPECT_EQ(attributed.attributes.names, std::vector<std::string>{"intensity"});
+  EXPECT_EQ(attributed.attributes.scalars[0], (std::vector<float>{0.5F, 0.25F}));
+  // colours written as fractions of 1
+  const AttributedPoints fractions = read_attributed_points(write("g.csv", "x,y,z,r,g,b\n1,2,3,1,0.5,0\n"));
+  EXPECT_EQ(fractions.attributes.colours.at(0), (Colour{255, 128, 0}));
+  EXPECT_EQ(io_error_of([&] { read_points(write("h.csv", "x,y,z,r,g,b\n1,2,3,red,0,0\n")); }),
+            path("h.csv").string() + ":2: expected a number, got 'red'");
   // a spreadsheet's export starts with a UTF-8 byte-order mark
   EXPECT_EQ(read_points(write("d.csv", "\xEF\xBB\xBFX,Y,Z\n1,2,3\n")).size(), 1U);
   EXPECT_EQ(read_points(write("e.csv", "\xEF\xBB\xBF" "1,2,3\n")).size(), 1U);
@@ -120,20 +166,22 @@ TEST_F(PointReader, a_header_without_x_y_z_or_with_part_of_a_normal_is_refused) 
 }
 
 // Leica's .pts: a point count before each scan, then x y z intensity [r g b].
-TEST_F(PointReader, pts_files_skip_point_counts_and_read_intensity_columns_as_positions) {
-  const PointSet seven = read_points(write("a.pts", "2\n1 2 3 -120 10 20 30\n4 5 6 -80 40 50 60\n1\n7 8 9 0 0 0 0\n"));
-  ASSERT_EQ(seven.size(), 3U);
-  EXPECT_FALSE(seven.has_normals());
-  testing::expect_same_point(Point3(7, 8, 9), seven.points[2]);
+TEST_F(PointReader, pts_files_skip_point_counts_and_read_intensity_and_colours) {
+  const AttributedPoints seven =
+      read_attributed_points(write("a.pts", "2\n1 2 3 -120 10 20 30\n4 5 6 -80 40 50 60\n1\n7 8 9 0 0 0 0\n"));
+  ASSERT_EQ(seven.points.size(), 3U);
+  EXPECT_FALSE(seven.points.has_normals());
+  testing::expect_same_point(Point3(7, 8, 9), seven.points.points[2]);
+  EXPECT_EQ(seven.attributes.names, std::vector<std::string>{"intensity"});
+  EXPECT_EQ(seven.attributes.scalars[0], (std::vector<float>{-120.0F, -80.0F, 0.0F}));
+  ASSERT_TRUE(seven.attributes.has_colours());
+  EXPECT_EQ(seven.attributes.colours[1], (Colour{40, 50, 60}));
   const PointSet four = read_points(write("b.pts", "1\n1 2 3 0.5\n"));
   ASSERT_EQ(four.size(), 1U);
   testing::expect_same_point(Point3(1, 2, 3), four.points[0]);
-  // elsewhere a lone number is no count and four columns are not a position
+  // elsewhere a lone number is no count
   const auto xyz = write("c.xyz", "2\n1 2 3\n");
-  EXPECT_EQ(io_error_of([&] { read_points(xyz); }),
-            xyz.string() + ":1: expected 3 or 6 numbers (x y z, or x y z nx ny nz), got 1: other columns "
-                           "(intensity, colour) are not read; keep the first 3 or 6, or name the columns in a "
-                           "header line (x y z ...)");
+  EXPECT_EQ(io_error_of([&] { read_points(xyz); }), xyz.string() + ":1: " + kTooFew + "1");
 }
 
 TEST_F(PointReader, reports_inconsistent_column_count) {
