@@ -481,7 +481,7 @@ LoadedSurface load_surface(const std::string& spec, const BuiltinSampling& sampl
     if (!sampling.boundary_files.empty())
       throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");
     load_mesh_samples(std::move(*mesh), spec, sampling.join_creases, out);
-    if (ext == "ply") {  // a PLY mesh's vertex colours and properties
+    if (ext == "ply" || ext == "obj") {  // a mesh's vertex colours (and a PLY's other properties)
       AttributedPoints vertices = io::read_attributed_points(spec);
       if (!vertices.attributes.empty()) {
         out.attribute_points = std::move(vertices.points.points);

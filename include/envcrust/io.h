@@ -27,7 +27,8 @@ namespace envcrust::io {
 ///  - `.ply`: ascii or binary (little/big endian), vertex x,y,z and optional nx,ny,nz;
 ///    red, green, blue (integer 0..255, 16-bit scaled down, float 0..1) as colours; every
 ///    other non-list vertex property (alpha, intensity, ...) a scalar of its name.
-///  - `.off/.obj/.stl`: the vertices of the mesh (normals and attributes: none).
+///  - `.off/.obj/.stl`: the vertices of the mesh (normals: none; `.obj` colours "v x y z r g b",
+///    0..1 or 0..255, when every vertex has one).
 /// @throws IoError one line naming the file and the problem, e.g.
 ///   "scan.xyz:12: expected at least 3 numbers ..., got 2", "scan.ply: truncated binary data
 ///   (vertex 17 of 100)", "a.xyz:3: non-finite coordinate", "a.xyz: no points".
@@ -125,7 +126,7 @@ enum class OutputKind {
 /// extension, in a folder that exists and is writable, not itself a folder ("out: is a
 /// folder, not a file") nor a device, pipe or socket.
 /// @throws IoError naming the file ("x.unknown: unknown
-/// extension '.unknown' (expected .ply, .off, .obj)", "out/x.ply: folder 'out' does not exist").
+/// extension '.unknown' (expected .ply, .off, .obj, .stl)", "out/x.ply: folder 'out' does not exist").
 void check_output_path(const std::filesystem::path& path, OutputKind kind);
 
 /// Balls (e.g. the polar balls of the Power Crust): centre, radius and an optional label.

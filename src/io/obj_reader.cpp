@@ -1,6 +1,9 @@
-// Reader of Wavefront OBJ meshes: `v` positions and `f` polygons (v, v/t, v//n, v/t/n, negative indices).
+// Reader of Wavefront OBJ meshes: `v` positions (with vertex colours, "v x y z r g b", as MeshLab
+// writes them) and `f` polygons (v, v/t, v//n, v/t/n, negative indices).
 #include "io_detail.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace envcrust::io::detail {
@@ -28,6 +31,25 @@ Index parse_reference(const std::filesystem::path& path, std::size_t line, std::
   return static_cast<Index>(resolved);
 }
 
+// "v x y z r g b" colours as 0..255: fractions of 1 as MeshLab writes them, or 0..255 when some
+// value is above 1. Kept only when every vertex has one.
+void add_vertex_colours(const std::vector<std::array<double, 3>>& colours, std::size_t vertices,
+                        PointAttributes& attributes) {
+  if (colours.empty() || colours.size() != vertices) return;
+  bool fractions = true;
+  for (const auto& c : colours)
+    for (const double v : c) fractions = fractions && v <= 1;
+  const double scale = fractions ? 255.0 : 1.0;
+  for (const auto& c : colours) {
+    Colour colour{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double v = c[k] * scale;
+      colour[k] = v > 0 ? static_cast<std::uint8_t>(std::lround(std::min(v, 255.0))) : 0;
+    }
+    attributes.colours.push_back(colour);
+  }
+}
+
 }  // namespace
 
 RawMesh read_obj(const std::filesystem::path& path) {
@@ -36,6 +58,7 @@ RawMesh read_obj(const std::filesystem::path& path) {
   LineCursor lines(data);
   std::string_view line;
   std::vector<std::string_view> tokens;
+  std::vector<std::array<double, 3>> colours;
   while (lines.next(line)) {
     split_tokens(strip_comment(line), tokens);
     if (tokens.empty()) {
@@ -60,6 +83,10 @@ RawMesh read_obj(const std::filesystem::path& path) {
         }
       }
       mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+      std::array<double, 3> rgb{};
+      if (tokens.size() == 7 && parse_double(tokens[4], rgb[0]) && parse_double(tokens[5], rgb[1]) &&
+          parse_double(tokens[6], rgb[2]) && colours.size() + 1 == mesh.vertices.size())
+        colours.push_back(rgb);
     } else if (tokens[0] == "f") {
       if (tokens.size() < 4) {
         fail_at(path, number,
@@ -74,6 +101,7 @@ RawMesh read_obj(const std::filesystem::path& path) {
     }
     // Normals, texture coordinates, groups, materials, lines and points carry nothing we use.
   }
+  add_vertex_colours(colours, mesh.vertices.size(), mesh.attributes);
   return mesh;
 }
 

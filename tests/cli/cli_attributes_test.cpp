@@ -195,5 +195,39 @@ TEST_F(Attributes, an_unknown_ply_property_is_carried) {
     })) << "vertex " << v;
 }
 
+// A mesh's vertex colours (OBJ's "v x y z r g b") reach the output too: each output vertex
+// takes the colour of the nearest vertex of the input mesh.
+TEST_F(Attributes, a_mesh_with_vertex_colours_carries_them) {
+  constexpr int kCells = 30;
+  std::vector<Sample> vertices;
+  {
+    std::ofstream out(path("cap.obj"));
+    for (int i = 0; i <= kCells; ++i) {
+      for (int j = 0; j <= kCells; ++j) {
+        const double x = -1 + 2.0 * i / kCells, y = -1 + 2.0 * j / kCells;
+        Sample s;
+        s.position = Point3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(0.3 * (x * x + y * y)));
+        s.colour = {static_cast<std::uint8_t>(8 * i), static_cast<std::uint8_t>(8 * j), 200};
+        out << "v " << xyz_text(s.position) << " " << int{s.colour[0]} << " " << int{s.colour[1]} << " 200\n";
+        vertices.push_back(s);
+      }
+    }
+    auto index = [](int i, int j) { return i * (kCells + 1) + j + 1; };
+    for (int i = 0; i < kCells; ++i)
+      for (int j = 0; j < kCells; ++j)
+        out << "f " << index(i, j) << " " << index(i + 1, j) << " " << index(i + 1, j + 1) << " " << index(i, j + 1) << "\n";
+  }
+  std::string header;
+  nlohmann::json report;
+  const AttributedPoints out = reconstruct("cap.obj", header, report);
+  EXPECT_NE(header.find("property uchar red\n"), std::string::npos) << header;
+  ASSERT_EQ(out.attributes.colours.size(), out.points.size());
+  const auto nearest = nearest_samples(vertices, out.points.points);
+  for (std::size_t v = 0; v < nearest.size(); ++v)
+    EXPECT_TRUE(std::any_of(nearest[v].begin(), nearest[v].end(),
+                            [&](std::size_t i) { return vertices[i].colour == out.attributes.colours[v]; }))
+        << "vertex " << v;
+}
+
 }  // namespace
 }  // namespace envcrust::testing

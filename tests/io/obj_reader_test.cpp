@@ -31,6 +31,18 @@ TEST_F(ObjReader, reads_all_face_reference_forms_and_negative_indices) {
   ASSERT_EQ(mesh.faces.size(), 2U);
   EXPECT_EQ(mesh.faces[0], (std::vector<Index>{0, 1, 2}));
   EXPECT_EQ(mesh.faces[1], (std::vector<Index>{0, 2, 3}));
+  // one vertex with a colour: no colours
+  EXPECT_FALSE(read_attributed_points(file).attributes.has_colours());
+}
+
+// MeshLab's vertex colours, "v x y z r g b" in 0..1 (or 0..255 when some value is above 1).
+TEST_F(ObjReader, reads_vertex_colours_when_every_vertex_has_one) {
+  const auto fractions = write("a.obj", "v 0 0 0 1 0.5 0\nv 1 0 0 0 0 1\nv 0 1 0 0.2 0.4 0.6\nf 1 2 3\n");
+  const AttributedPoints a = read_attributed_points(fractions);
+  EXPECT_EQ(a.attributes.colours, (std::vector<Colour>{{255, 128, 0}, {0, 0, 255}, {51, 102, 153}}));
+  const auto bytes = write("b.obj", "v 0 0 0 255 128 0\nv 1 0 0 0 0 1\nv 0 1 0 1 1 1\nf 1 2 3\n");
+  EXPECT_EQ(read_attributed_points(bytes).attributes.colours.at(0), (Colour{255, 128, 0}));
+  EXPECT_EQ(read_attributed_points(bytes).attributes.colours.at(1), (Colour{0, 0, 1}));
 }
 
 TEST_F(ObjReader, fan_triangulates_polygons) {
