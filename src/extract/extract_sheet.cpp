@@ -29,7 +29,7 @@ constexpr double kNotchOnCurve = 0.1;
 constexpr double kNotchMinDepth = 0.25;
 constexpr double kNotchMaxWidth = 4.0;
 // A self-intersection cut round that leaves no fewer pairs is retried with twice the radius,
-// up to this many times the first radius. Measured on the face scan's points (fifth session):
+// up to this many times the first radius. Measured on the face scan's points:
 // at 0.5 rho a round left its 84 pairs, at 1 rho none.
 constexpr double kMaxCutWidening = 4.0;
 
