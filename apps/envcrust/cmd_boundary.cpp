@@ -27,7 +27,7 @@ struct BoundaryCommand {
   std::string points_output;
   std::string reference;
   bool no_knots = false;
-  BuiltinSampling sampling;
+  InputSettings sampling;
   CommonFlags common;
 };
 

@@ -23,7 +23,7 @@ struct PowerCrustCommand {
   std::string output;
   std::string medial_axis_output;
   std::string poles_output;
-  BuiltinSampling sampling;
+  InputSettings sampling;
   powercrust::PowerCrustOptions options;
   bool keep_unknown = false;
   CommonFlags common;

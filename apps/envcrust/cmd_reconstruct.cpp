@@ -48,7 +48,7 @@ struct ReconstructCommand {
   remesh::RemeshOptions remesh;  // used with --remesh
   std::string orientable = "auto";    // --orientable: auto, yes or no
   std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_input_options)
-  BuiltinSampling sampling;
+  InputSettings sampling;
   pipeline::ReconstructOptions options;
   CommonFlags common;
 };
@@ -95,8 +95,9 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
       ->capture_default_str()
       ->check(number_above(0, true));
   sub.add_option("--seed", cmd.sampling.seed, "Seed of builtin sampling and envelope thinning")->check(seed_number())->capture_default_str();
-  auto* no_boundary = sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.detect_boundary = false; },
-                                   "Point files: do not detect boundary curves (a closed surface)");
+  auto* no_boundary =
+      sub.add_flag("--no-boundary", [&cmd](std::int64_t) { cmd.sampling.preparation.use_boundary_detection = false; },
+                   "Point files: do not detect boundary curves (a closed surface)");
   add_boundary_options(sub, cmd.sampling)->excludes(no_boundary);
   sub.add_flag("--rho-adaptive",
                [&cmd](std::int64_t) { cmd.options.envelope.rho_mode = envelope::RhoMode::Adaptive; },

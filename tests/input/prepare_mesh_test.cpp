@@ -1,0 +1,110 @@
+// Tests of input::prepare_mesh: a disc, an annulus and a cylinder give their border loops and
+// topology, a triangle soup is welded back into one piece, a folded sheet's crease is rounded
+// off or joined, and the exact refusals.
+#include "fixtures/shapes.h"
+
+#include "envcrust/errors.h"
+#include "envcrust/input.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace envcrust {
+namespace {
+
+bool has_note(const input::PreparedInput& prepared, const std::string& note) {
+  for (const auto& n : prepared.notes)
+    if (n == note) return true;
+  return false;
+}
+
+struct MeshCase {
+  std::string name;
+  TriangleMesh mesh;
+  std::size_t loops;
+  bool is_orientable;
+  long genus;
+};
+
+TEST(PrepareMesh, border_loops_and_topology_of_small_meshes) {
+  const std::vector<MeshCase> cases = {{"square", fixtures::square(4), 1, true, 0},
+                                       {"annulus", fixtures::annulus(), 2, true, 0},
+                                       {"open cylinder", fixtures::open_cylinder(), 2, true, 0},
+                                       {"moebius", fixtures::moebius(), 1, false, 1}};
+  for (const auto& c : cases) {
+    const auto prepared = input::prepare_mesh(c.mesh);
+    EXPECT_EQ(prepared.samples.boundary.size(), c.loops) << c.name;
+    ASSERT_TRUE(prepared.kind.is_orientable.has_value()) << c.name;
+    EXPECT_EQ(*prepared.kind.is_orientable, c.is_orientable) << c.name;
+    ASSERT_TRUE(prepared.kind.genus.has_value()) << c.name;
+    EXPECT_EQ(*prepared.kind.genus, c.genus) << c.name;
+    EXPECT_FALSE(prepared.kind.is_builtin) << c.name;
+    // Every vertex (all used, none of zero normal) and every face centre is a sample.
+    EXPECT_EQ(prepared.samples.points.size(), c.mesh.vertices.size() + c.mesh.triangles.size()) << c.name;
+    EXPECT_TRUE(has_note(prepared, "mesh vertices and face centres; " + std::to_string(c.loops) + " border loops"))
+        << c.name;
+  }
+}
+
+TEST(PrepareMesh, a_triangle_soup_is_welded_into_one_disc) {
+  const TriangleMesh square = fixtures::square(4);  // 25 vertices, 32 faces
+  const auto prepared = input::prepare_mesh(fixtures::as_soup(square));
+  EXPECT_TRUE(has_note(prepared, "71 vertices at the coordinates of another welded to it"));
+  EXPECT_EQ(prepared.samples.boundary.size(), 1u);
+  EXPECT_EQ(prepared.samples.points.size(), 25u + 32u);
+}
+
+// Two unit squares bent by 90 degrees along a 1-unit fold (a tenth of the diagonal is 0.17).
+TEST(PrepareMesh, a_folded_sheets_crease_is_rounded_off_or_joined) {
+  const TriangleMesh sheet = fixtures::folded_sheet(90.0);
+  const auto rounded = input::prepare_mesh(sheet);
+  EXPECT_TRUE(rounded.samples.creases.empty());
+  ASSERT_EQ(rounded.notes.size(), 2u);
+  EXPECT_EQ(rounded.notes[1].rfind("the mesh bends by more than 80 degrees across 20 edges (1 long in all", 0), 0u)
+      << rounded.notes[1];
+
+  input::InputOptions join;
+  join.creases = input::CreaseMode::Join;
+  const auto joined = input::prepare_mesh(sheet, join);
+  EXPECT_EQ(joined.samples.creases.size(), 20u);
+  // Rounded off, the fitted normal lines turn across the fold where the faces' own jump.
+  ASSERT_EQ(joined.samples.normals.size(), rounded.samples.normals.size());
+  std::size_t turned = 0;
+  for (std::size_t i = 0; i < joined.samples.normals.size(); ++i)
+    turned += std::abs(joined.samples.normals[i] * rounded.samples.normals[i]) < std::cos(10.0 * M_PI / 180.0);
+  EXPECT_GT(turned, 0u);
+}
+
+TEST(PrepareMesh, refusals_start_with_the_inputs_name) {
+  input::InputOptions options;
+  options.name = "m.off";
+  try {
+    input::prepare_mesh({}, options);
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "m.off: the mesh has no faces");
+  }
+  TriangleMesh twice;
+  twice.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
+  twice.triangles = {{0, 0, 1}, {1, 2, 2}};
+  try {
+    input::prepare_mesh(twice, options);
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "m.off: the mesh has no faces but 2 that use a vertex twice");
+  }
+  TriangleMesh fin;  // three triangles on the edge (0, 1)
+  fin.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0), Point3(0, -1, 0), Point3(0, 0, 1)};
+  fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  try {
+    input::prepare_mesh(fin, options);
+    FAIL() << "no exception";
+  } catch (const input::NotASurface& e) {
+    EXPECT_STREQ(e.what(), "m.off: edge (0, 1) has 3 faces: the mesh is not a surface");
+  }
+}
+
+}  // namespace
+}  // namespace envcrust
