@@ -179,7 +179,8 @@ struct EdgeFacts {
 };
 
 EdgeFacts find_edges(const RawPatch& raw, double tolerance) {
-  const auto [u0, u1, v0, v1] = raw.range();
+  // Named copies, not a structured binding: Clang before 16 cannot capture bindings in lambdas.
+  const double u0 = raw.range()[0], u1 = raw.range()[1], v0 = raw.range()[2], v1 = raw.range()[3];
   const auto t_of = [](double lo, double hi, int k) { return lo + (hi - lo) * k / (kEdgeProbes - 1); };
   const auto near = [&](const Point3& a, const Point3& b) { return CGAL::squared_distance(a, b) <= tolerance * tolerance; };
   const auto all = [&](auto predicate) {

@@ -1,0 +1,6 @@
+// libFuzzer harness of the NURBS-Python JSON reader: the patches, then each small one made a surface.
+#include "fuzz_support.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return envcrust::fuzz::run_input(".json", data, size, envcrust::fuzz::read_nurbs);
+}
