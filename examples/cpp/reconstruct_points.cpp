@@ -1,19 +1,19 @@
 // Reconstruct a surface with boundary from a point file through the envcrust library:
 //   reconstruct_points POINTS OUT_MESH
-// POINTS: .xyz/.txt/.csv/.pts/.ply with x y z and optionally nx ny nz per point.
-// OUT_MESH: .ply, .off or .obj.
-// It prepares the samples as `envcrust reconstruct POINTS` does in its main steps (normal lines
-// fitted when the file has none, boundary curves detected), reconstructs, and prints the
-// result's topology.
-#include <envcrust/boundary.h>
+// POINTS: .xyz/.txt/.csv/.pts/.ply with x y z, optionally nx ny nz, colours and other columns.
+// OUT_MESH: .ply, .obj, .off or .stl.
+// It does what `envcrust reconstruct POINTS -o OUT_MESH` does with its defaults: the input stage
+// (input::prepare_points: duplicates merged, stray samples removed, normal lines fitted when the
+// file has none, boundary curves detected), reconstruct's settings for that input, the
+// reconstruction, and the output written with vertex normals and the points' colours.
+#include <envcrust/attributes.h>
 #include <envcrust/errors.h>
+#include <envcrust/input.h>
 #include <envcrust/io.h>
-#include <envcrust/neighbour_table.h>
 #include <envcrust/normals.h>
 #include <envcrust/pipeline.h>
 #include <envcrust/topology.h>
 
-#include <algorithm>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -22,41 +22,33 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    envcrust::PointSet points = envcrust::io::read_points(argv[1]);
+    envcrust::input::PointInput points;
+    points.points = envcrust::io::read_attributed_points(argv[1]);
+    points.are_normals_text_columns = envcrust::io::is_text_point_file(argv[1]);  // x y z r g b: colours
+    envcrust::input::InputOptions input_options;
+    input_options.name = argv[1];  // messages name the file
+    const envcrust::input::PreparedInput prepared = envcrust::input::prepare_points(std::move(points), input_options);
+    for (const auto& note : prepared.notes) std::cout << "  input: " << note << "\n";
 
-    // One search of each point's nearest neighbours serves the normal fits and the boundary.
-    const envcrust::normals::NormalOptions normal_options;
-    const envcrust::boundary::BoundaryOptions boundary_options;
-    const unsigned k = static_cast<unsigned>(std::max({normal_options.neighbors, boundary_options.neighbors, 6}));
-    const envcrust::NeighbourTable table(points.points, k);
-
-    envcrust::pipeline::InputKind kind;
-    kind.is_builtin = false;  // a point file: reconstruct's settings for scans
-    if (!points.has_normals()) {
-      points.normals = envcrust::normals::estimate_normal_lines(points.points, table, normal_options);
-      kind.are_normals_estimated = true;
-    }
-
-    envcrust::envelope::SurfaceSamples samples;
-    samples.points = points.points;
-    samples.normals = points.normals;
-    auto detection = envcrust::boundary::detect_boundary(samples.points, samples.normals, table, boundary_options);
-    samples.boundary = std::move(detection.curves);
-    kind.is_boundary_detected = true;
-
-    const envcrust::pipeline::ReconstructOptions options = envcrust::pipeline::options_for_input(kind);
-    const envcrust::pipeline::ReconstructResult result = envcrust::pipeline::reconstruct(samples, options);
+    // The settings `envcrust reconstruct` chooses for a scan (pipeline::options_for_input).
+    const envcrust::pipeline::ReconstructOptions options = envcrust::pipeline::options_for_input(prepared.kind);
+    const envcrust::pipeline::ReconstructResult result = envcrust::pipeline::reconstruct(prepared.samples, options);
     if (result.mesh.triangles.empty()) {
       std::cerr << argv[1] << ": the reconstruction is empty\n";
       return 1;
     }
-    envcrust::io::write_mesh(argv[2], result.mesh);
+    envcrust::io::MeshVertexData vertex_data;
+    vertex_data.normals = envcrust::normals::mesh_vertex_normal_lines(result.mesh);
+    vertex_data.attributes =
+        envcrust::attributes::carry_nearest(prepared.attribute_points, prepared.attributes, result.mesh.vertices);
+    envcrust::io::write_mesh(argv[2], result.mesh, vertex_data);
 
     const auto topology = envcrust::topology::analyze_topology(result.mesh);
-    std::cout << argv[1] << ": " << samples.points.size() << " points, " << samples.boundary.size()
+    std::cout << argv[1] << ": " << prepared.samples.points.size() << " points, " << prepared.samples.boundary.size()
               << " boundary curves detected -> " << argv[2] << ": " << topology.faces << " faces, chi "
               << topology.euler_characteristic << ", " << topology.boundary_loops.size() << " boundary loops, "
               << (topology.is_manifold() ? "manifold" : "not manifold") << "\n";
+    for (const auto& w : prepared.warnings) std::cout << "  warning: " << w << "\n";
     for (const auto& w : result.warnings) std::cout << "  warning: " << w << "\n";
     return 0;
   } catch (const envcrust::Error& e) {
