@@ -95,6 +95,15 @@ TEST(PrepareMesh, refusals_start_with_the_inputs_name) {
   } catch (const InvalidInput& e) {
     EXPECT_STREQ(e.what(), "m.off: the mesh has no faces but 2 that use a vertex twice");
   }
+  TriangleMesh flat;  // a face on a line, and again reversed: no area, no normal
+  flat.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(2, 0, 0)};
+  flat.triangles = {{0, 1, 2}, {0, 2, 1}};
+  try {
+    input::prepare_mesh(flat, options);
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "m.off: the mesh has no face of positive area");
+  }
   TriangleMesh fin;  // three triangles on the edge (0, 1)
   fin.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0), Point3(0, -1, 0), Point3(0, 0, 1)};
   fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};

@@ -85,6 +85,19 @@ TEST(PreparePoints, given_rim_points_make_one_boundary_curve_named_in_the_note) 
   EXPECT_TRUE(has_note(prepared, "boundary given: 1 curves from 60 points of rim.xyz"));
 }
 
+TEST(PreparePoints, an_empty_given_boundary_is_refused_naming_its_files) {
+  input::PointInput in = as_input(hemisphere(500));
+  in.given_boundary = input::GivenBoundary{{}, "a.xyz, b.polyline"};
+  input::InputOptions options;
+  options.name = "scan.xyz";
+  try {
+    input::prepare_points(std::move(in), options);
+    FAIL() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "a.xyz, b.polyline: no boundary points given");
+  }
+}
+
 // 20 points repeated, each copy with another colour: merged, each keeping its first
 // occurrence's colour, and the attributes stay one per sample kept.
 TEST(PreparePoints, duplicates_are_merged_keeping_the_first_occurrences_attributes) {
