@@ -5,6 +5,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/input.h"
+#include "input/expect_refusal.h"
 
 #include <gtest/gtest.h>
 
@@ -80,39 +81,23 @@ TEST(PrepareMesh, a_folded_sheets_crease_is_rounded_off_or_joined) {
 TEST(PrepareMesh, refusals_start_with_the_inputs_name) {
   input::InputOptions options;
   options.name = "m.off";
-  try {
-    input::prepare_mesh({}, options);
-    FAIL() << "no exception";
-  } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "m.off: the mesh has no faces");
-  }
+  expect_refusal<InvalidInput>([&] { input::prepare_mesh({}, options); },
+                  "m.off: the mesh has no faces");
   TriangleMesh twice;
   twice.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
   twice.triangles = {{0, 0, 1}, {1, 2, 2}};
-  try {
-    input::prepare_mesh(twice, options);
-    FAIL() << "no exception";
-  } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "m.off: the mesh has no faces but 2 that use a vertex twice");
-  }
+  expect_refusal<InvalidInput>([&] { input::prepare_mesh(twice, options); },
+                  "m.off: the mesh has no faces but 2 that use a vertex twice");
   TriangleMesh flat;  // a face on a line, and again reversed: no area, no normal
   flat.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(2, 0, 0)};
   flat.triangles = {{0, 1, 2}, {0, 2, 1}};
-  try {
-    input::prepare_mesh(flat, options);
-    FAIL() << "no exception";
-  } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "m.off: the mesh has no face of positive area");
-  }
+  expect_refusal<InvalidInput>([&] { input::prepare_mesh(flat, options); },
+                  "m.off: the mesh has no face of positive area");
   TriangleMesh fin;  // three triangles on the edge (0, 1)
   fin.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0), Point3(0, -1, 0), Point3(0, 0, 1)};
   fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
-  try {
-    input::prepare_mesh(fin, options);
-    FAIL() << "no exception";
-  } catch (const input::NotASurface& e) {
-    EXPECT_STREQ(e.what(), "m.off: edge (0, 1) has 3 faces: the mesh is not a surface");
-  }
+  expect_refusal<input::NotASurface>([&] { input::prepare_mesh(fin, options); },
+                  "m.off: edge (0, 1) has 3 faces: the mesh is not a surface");
 }
 
 }  // namespace

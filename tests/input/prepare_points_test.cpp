@@ -6,6 +6,7 @@
 
 #include "envcrust/errors.h"
 #include "envcrust/input.h"
+#include "input/expect_refusal.h"
 
 #include <gtest/gtest.h>
 
@@ -90,12 +91,8 @@ TEST(PreparePoints, an_empty_given_boundary_is_refused_naming_its_files) {
   in.given_boundary = input::GivenBoundary{{}, "a.xyz, b.polyline"};
   input::InputOptions options;
   options.name = "scan.xyz";
-  try {
-    input::prepare_points(std::move(in), options);
-    FAIL() << "no exception";
-  } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "a.xyz, b.polyline: no boundary points given");
-  }
+  expect_refusal<InvalidInput>([&] { input::prepare_points(std::move(in), options); },
+                  "a.xyz, b.polyline: no boundary points given");
 }
 
 // 20 points repeated, each copy with another colour: merged, each keeping its first
@@ -184,12 +181,8 @@ TEST(PreparePoints, whole_numbers_up_to_255_in_text_columns_are_read_as_colours)
 }
 
 TEST(PreparePoints, no_points_are_refused_with_the_count) {
-  try {
-    input::prepare_points({});
-    FAIL() << "no exception";
-  } catch (const DegenerateInput& e) {
-    EXPECT_STREQ(e.what(), "need at least 5 distinct points, got 0");
-  }
+  expect_refusal<DegenerateInput>([&] { input::prepare_points({}); },
+                  "need at least 5 distinct points, got 0");
 }
 
 TEST(PreparePoints, refusals_start_with_the_inputs_name) {
@@ -197,29 +190,17 @@ TEST(PreparePoints, refusals_start_with_the_inputs_name) {
   options.name = "scan.xyz";
   PointSet few;
   for (int i = 0; i < 8; ++i) few.points.emplace_back(i % 2, i / 4, 0.0);  // 4 distinct corners, twice
-  try {
-    input::prepare_points(as_input(few), options);
-    FAIL() << "no exception";
-  } catch (const DegenerateInput& e) {
-    EXPECT_STREQ(e.what(), "scan.xyz: need at least 5 distinct points, got 4 (4 duplicates merged)");
-  }
+  expect_refusal<DegenerateInput>([&] { input::prepare_points(as_input(few), options); },
+                  "scan.xyz: need at least 5 distinct points, got 4 (4 duplicates merged)");
   PointSet zero_normal = hemisphere(10, true);
   zero_normal.normals[6] = Vector3(0, 0, 0);
-  try {
-    input::prepare_points(as_input(zero_normal), options);
-    FAIL() << "no exception";
-  } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "scan.xyz: point 7 has a zero normal");
-  }
+  expect_refusal<InvalidInput>([&] { input::prepare_points(as_input(zero_normal), options); },
+                  "scan.xyz: point 7 has a zero normal");
   PointSet line;
   for (int i = 0; i < 100; ++i) line.points.emplace_back(0.2 * i, 0.1 * i, 0.0);
-  try {
-    input::prepare_points(as_input(line), options);
-    FAIL() << "no exception";
-  } catch (const DegenerateInput& e) {
-    EXPECT_STREQ(e.what(), "scan.xyz: all 100 points lie on a line (within 1e-5 of their extent, 22.1): no surface "
-                           "to reconstruct");
-  }
+  expect_refusal<DegenerateInput>([&] { input::prepare_points(as_input(line), options); },
+                  "scan.xyz: all 100 points lie on a line (within 1e-5 of their extent, 22.1): no surface "
+                  "to reconstruct");
 }
 
 }  // namespace
