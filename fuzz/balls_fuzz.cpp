@@ -5,7 +5,10 @@
 namespace {
 
 void read_balls(const std::filesystem::path& path) {
-  envcrust::fuzz::try_read(path, [&] { (void)envcrust::io::read_balls(path); });
+  using namespace envcrust;
+  io::BallSet balls;
+  if (!fuzz::try_read(path, [&] { balls = io::read_balls(path); })) return;
+  fuzz::check_balls(balls);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <tbb/global_control.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -98,6 +99,53 @@ bool try_read(const std::filesystem::path& path, Read&& read) {
   }
 }
 
+/// A reader's result broke its promise (io.h): report and abort, so that libFuzzer keeps the input.
+[[noreturn]] inline void broken(const char* what) {
+  std::fprintf(stderr, "fuzz: accepted input gives %s\n", what);
+  std::abort();
+}
+
+/// What io.h promises of an accepted file: usable coordinates (finite, within 1e30).
+inline void check_coordinates(const std::vector<Point3>& points) {
+  for (const Point3& p : points) {
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(p[i]) || std::abs(p[i]) > 1e30) broken("an unusable coordinate");
+    }
+  }
+}
+
+/// ... and a mesh's triangles index its vertices.
+inline void check_mesh(const TriangleMesh& mesh) {
+  check_coordinates(mesh.vertices);
+  for (const auto& triangle : mesh.triangles) {
+    for (const Index v : triangle) {
+      if (v >= mesh.vertices.size()) broken("a triangle index out of range");
+    }
+  }
+}
+
+/// ... and points carry normals and attributes for all of them or none.
+inline void check_points(const AttributedPoints& points) {
+  const std::size_t n = points.points.size();
+  if (n == 0) broken("no points");
+  check_coordinates(points.points.points);
+  if (!points.points.normals.empty() && points.points.normals.size() != n) broken("a normal count unlike the point count");
+  if (!points.attributes.colours.empty() && points.attributes.colours.size() != n) broken("a colour count unlike the point count");
+  if (points.attributes.scalars.size() != points.attributes.names.size()) broken("scalar columns unlike their names");
+  for (const auto& column : points.attributes.scalars) {
+    if (column.size() != n) broken("a scalar column unlike the point count");
+  }
+}
+
+/// ... and balls have a radius > 0 and a label each.
+inline void check_balls(const io::BallSet& balls) {
+  check_coordinates(balls.centres);
+  if (balls.radii.size() != balls.centres.size() || balls.labels.size() != balls.centres.size()) broken("balls without a radius or label each");
+  for (const double r : balls.radii) {
+    if (!std::isfinite(r) || r <= 0) broken("a radius not finite and > 0");
+  }
+}
+
 /// The analyzer on a small mesh. Its own refusals (InvalidInput, DegenerateInput, ...) are
 /// fine; a crash, a hang or another exception is a finding.
 inline void analyze_small_mesh(const TriangleMesh& mesh) {
@@ -117,19 +165,32 @@ inline void estimate_small_normals(const PointSet& points) {
   }
 }
 
+/// The file as points, then normals.
+inline void read_points(const std::filesystem::path& path) {
+  AttributedPoints points;
+  if (!try_read(path, [&] { points = io::read_attributed_points(path); })) return;
+  check_points(points);
+  estimate_small_normals(points.points);
+}
+
 /// What a mesh harness does: the file as a mesh (then the analyzer) and as points (then normals).
 inline void read_mesh_and_points(const std::filesystem::path& path) {
   TriangleMesh mesh;
-  if (try_read(path, [&] { mesh = io::read_triangle_mesh(path); })) analyze_small_mesh(mesh);
-  AttributedPoints points;
-  if (try_read(path, [&] { points = io::read_attributed_points(path); })) estimate_small_normals(points.points);
+  if (try_read(path, [&] { mesh = io::read_triangle_mesh(path); })) {
+    check_mesh(mesh);
+    analyze_small_mesh(mesh);
+  }
+  read_points(path);
 }
 
 /// What a point-file harness does: the file as points (then normals) and as a closed curve.
 inline void read_points_and_curve(const std::filesystem::path& path) {
-  AttributedPoints points;
-  if (try_read(path, [&] { points = io::read_attributed_points(path); })) estimate_small_normals(points.points);
-  try_read(path, [&] { (void)io::read_polyline(path); });
+  read_points(path);
+  Polyline curve;
+  if (try_read(path, [&] { curve = io::read_polyline(path); })) {
+    if (curve.size() < 3) broken("a closed curve of fewer than 3 points");
+    check_coordinates(curve);
+  }
 }
 
 /// What a NURBS harness does: the patches, then each small one made a surface (its checks,

@@ -6,7 +6,8 @@ namespace {
 
 void read_ply(const std::filesystem::path& path) {
   envcrust::fuzz::read_mesh_and_points(path);
-  envcrust::fuzz::try_read(path, [&] { (void)envcrust::io::read_balls(path); });
+  envcrust::io::BallSet balls;
+  if (envcrust::fuzz::try_read(path, [&] { balls = envcrust::io::read_balls(path); })) envcrust::fuzz::check_balls(balls);
 }
 
 }  // namespace

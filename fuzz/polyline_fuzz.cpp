@@ -8,6 +8,8 @@ void read_curve(const std::filesystem::path& path) {
   using namespace envcrust;
   Polyline curve;
   if (!fuzz::try_read(path, [&] { curve = io::read_polyline(path); })) return;
+  if (curve.size() < 3) fuzz::broken("a closed curve of fewer than 3 points");
+  fuzz::check_coordinates(curve);
   if (curve.size() > fuzz::max_curve_points) return;
   try {
     (void)analysis::analyze_curve(curve);

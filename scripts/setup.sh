@@ -2,7 +2,8 @@
 # envcrust set-up: install missing Debian packages (idempotent), build, then
 #   run   - run the main job on a built-in example (default)
 #   test  - run the whole test suite, then install into a temporary prefix and build and run
-#           examples/cpp against the installed package (what .ci/run calls)
+#           examples/cpp against the installed package, then fuzz each reader for 10 s when
+#           clang-14 and libclang-rt-14-dev are installed (what .ci/run calls)
 #   build - only build
 set -euo pipefail
 mode="${1:-run}"
@@ -42,6 +43,8 @@ case "$mode" in
   test)
     ctest --test-dir "$build" --output-on-failure -j "$jobs" --timeout 600
     bash "$root/scripts/test_install.sh" "$build"
+    # A short fuzzing pass over every reader (docs/fuzzing.md); skipped without Clang's libFuzzer.
+    bash "$root/scripts/fuzz.sh" --seconds "${ENVCRUST_FUZZ_SECONDS:-10}" --if-available
     ;;
   *) echo "usage: scripts/setup.sh [run|test|build]" >&2; exit 2 ;;
 esac
