@@ -13,17 +13,7 @@ class GarbageInput : public testing::TempDirTest {};
 
 // Read `file` with every reader; anything but success or IoError fails the test.
 void read_everything(const std::filesystem::path& file) {
-  const auto survive = [&](const char* reader, auto&& action) {
-    try {
-      action();
-    } catch (const IoError& error) {
-      const std::string message = error.what();
-      EXPECT_EQ(message.rfind(file.string() + ":", 0), 0U) << reader << ": " << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << reader << ": " << message;
-    } catch (const std::exception& error) {
-      ADD_FAILURE() << reader << " threw a non-IoError: " << error.what();
-    }
-  };
+  const auto survive = [&](const char* reader, auto&& action) { testing::expect_read_or_one_line_refusal(file, reader, action); };
   survive("read_points", [&] { read_points(file); });
   survive("read_polygon_mesh", [&] { read_polygon_mesh(file); });
   survive("read_polyline", [&] { read_polyline(file); });

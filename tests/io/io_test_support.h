@@ -69,6 +69,21 @@ std::string io_error_of(Action&& action) {
   return "no exception";
 }
 
+/// Run `action` (`reader` reading `file`): success, or an IoError of one line "FILE: problem";
+/// anything else fails the test (the project's rule for bad input).
+template <class Action>
+void expect_read_or_one_line_refusal(const std::filesystem::path& file, const char* reader, Action&& action) {
+  try {
+    action();
+  } catch (const IoError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind(file.string() + ":", 0), 0U) << reader << ": " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << reader << ": " << message;
+  } catch (const std::exception& error) {
+    ADD_FAILURE() << reader << " threw a non-IoError: " << error.what();
+  }
+}
+
 /// Builds binary file contents value by value in a chosen byte order.
 class Bytes {
  public:
