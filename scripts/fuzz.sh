@@ -37,10 +37,10 @@ if [ -z "$cxx" ]; then
   done
 fi
 missing=""
-if [ -z "$cxx" ]; then
-  missing="no clang++ on PATH (Debian: apt-get install clang-14 libclang-rt-14-dev)"
+if [ -z "$cxx" ] || ! command -v "$cxx" >/dev/null; then
+  missing="no ${cxx:-clang++} (Debian: apt-get install clang-14 libclang-rt-14-dev)"
 elif [ ! -f "$("$cxx" -print-runtime-dir 2>/dev/null)/libclang_rt.fuzzer-x86_64.a" ] &&
-     [ ! -f "$("$cxx" -print-file-name=libclang_rt.fuzzer-x86_64.a)" ]; then
+     [ ! -f "$("$cxx" -print-file-name=libclang_rt.fuzzer-x86_64.a 2>/dev/null)" ]; then
   missing="$cxx has no libFuzzer runtime (Debian: apt-get install libclang-rt-14-dev)"
 fi
 if [ -n "$missing" ]; then
