@@ -47,7 +47,12 @@ if [ -n "$modules" ]; then
   dirs=()
   for m in $modules; do dirs+=("$build/tests/$m"); done
 fi
+failed=()
 for dir in "${dirs[@]}"; do
-  nice -n 10 ctest --test-dir "$dir" "${ctest_args[@]}"
+  nice -n 10 ctest --test-dir "$dir" "${ctest_args[@]}" || failed+=("${dir#"$build"/}")
 done
+if ((${#failed[@]})); then
+  echo "sanitize: failures in: ${failed[*]} (the reports are above); total $(($(date +%s) - start)) s" >&2
+  exit 1
+fi
 echo "sanitize: clean; total $(($(date +%s) - start)) s"

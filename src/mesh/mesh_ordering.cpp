@@ -14,6 +14,8 @@ namespace envcrust::mesh {
 std::vector<std::size_t> hilbert_order(const std::vector<Point3>& points) {
   std::vector<std::size_t> order(points.size());  // the property map's key type
   std::iota(order.begin(), order.end(), std::size_t{0});
+  // make_property_map takes &points[0]: undefined on an empty vector (UBSan, scripts/sanitize.sh).
+  if (points.empty()) return order;
   using Map = CGAL::Pointer_property_map<Point3>::const_type;
   CGAL::hilbert_sort<CGAL::Parallel_tag>(order.begin(), order.end(),
                      CGAL::Spatial_sort_traits_adapter_3<Kernel, Map>(CGAL::make_property_map(points)));
