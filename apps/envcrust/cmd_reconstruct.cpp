@@ -19,6 +19,7 @@
 #include "envcrust/pipeline.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -46,6 +47,7 @@ struct ReconstructCommand {
   bool use_remesh = false;
   bool force = false;  // --force: run a rho the sampling cannot support
   remesh::RemeshOptions remesh;  // used with --remesh
+  std::string extract = "sheet";      // --extract: samples, sheet or powershape
   std::string orientable = "auto";    // --orientable: auto, yes or no
   std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_input_options)
   InputSettings sampling;
@@ -166,6 +168,7 @@ void write_outliers(const ReconstructCommand& cmd, const LoadedSurface& loaded) 
 // --no-adaptive-retry. The cuts apply to the medial sheet only.
 void choose_input_options(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);
+  if (cmd.extract == "samples") cmd.options.mesh_samples = interpolate::InterpolateOptions{};
   auto& sheet = cmd.options.sheet;
   if (cmd.orientable == "yes") {
     sheet.cut_to_orientable = true;
@@ -433,11 +436,18 @@ void register_reconstruct(CLI::App& app) {
                                                            {"powercrust", pipeline::Method::PowerCrust}};
   sub->add_option("--method", cmd->options.method, "envelope (default) or powercrust (direct, for comparison)")
       ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
-  const std::map<std::string, pipeline::Extraction> extractions = {
-      {"sheet", pipeline::Extraction::Sheet}, {"powershape", pipeline::Extraction::PowerShape}};
-  sub->add_option("--extract", cmd->options.extraction,
-                  "sheet (default: clean 2-manifold) or powershape (the paper's raw power shape)")
-      ->transform(CLI::CheckedTransformer(extractions, CLI::ignore_case));
+  sub->add_option("--extract", cmd->extract,
+                  "sheet (default: the medial sheet, a clean 2-manifold finer than the input), samples (the input "
+                  "samples meshed along the sheet, kept in its place when their mesh has the sheet's topology: the "
+                  "input's resolution) or powershape (the paper's raw power shape)")
+      ->check(CLI::IsMember({"samples", "sheet", "powershape"}, CLI::ignore_case))
+      ->each([cmd](const std::string& value) {
+        std::string lower = value;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+        cmd->extract = lower;
+        cmd->options.extraction =
+            lower == "powershape" ? pipeline::Extraction::PowerShape : pipeline::Extraction::Sheet;
+      });
   sub->add_option("--envelope-out", cmd->envelope_output, "Also write the envelope samples (with offset directions)");
   sub->add_flag("--orientable{yes}", cmd->orientable,
                 "--orientable alone = --orientable=yes: the surface is orientable (a scan of a solid): where the sheet comes "

@@ -167,6 +167,16 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
                    {"min_angle_deg_after", s.min_angle_deg_after},
                    {"seconds", s.seconds}};
   }
+  if (const auto &m = result.sample_meshing) {
+    j["sample_meshing"] = {{"is_kept", m->is_kept},
+                           {"sheet_topology", m->sheet_topology},
+                           {"samples_topology", m->samples_topology},
+                           {"spacing", m->stats.spacing},
+                           {"candidates_refused", m->stats.candidates_refused},
+                           {"holes_filled", m->stats.holes_filled},
+                           {"holes_left", m->stats.holes_left},
+                           {"seconds", m->stats.seconds}};
+  }
   if (result.envelope_crust) {
     const auto crust = topology::analyze_topology(*result.envelope_crust);
     j["envelope_crust"] = {{"faces", crust.faces},
@@ -206,6 +216,14 @@ void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &resu
           result.seconds.power_crust);
   if (result.sheet_stats) stage("extraction", result.seconds.extraction);
   out << "\n";
+  if (const auto &m = result.sample_meshing) {
+    if (m->is_kept)
+      out << "  output: the input samples meshed along the sheet (" << m->samples_topology << "; "
+          << m->stats.holes_filled << " holes closed), " << m->stats.seconds << " s\n";
+    else
+      out << "  output: the sheet (the samples meshed along it have " << m->samples_topology << ", the sheet "
+          << m->sheet_topology << ")\n";
+  }
   if (const auto &s = result.remesh_stats; s && s->is_remeshed)
     out << "  remesh: " << s->faces_before << " -> " << s->faces_after << " faces (target edge "
         << s->target_edge_length << "), min angle " << s->min_angle_deg_before << " -> " << s->min_angle_deg_after

@@ -5,6 +5,7 @@
 #include "envcrust/analysis.h"
 #include "envcrust/envelope.h"
 #include "envcrust/extract.h"
+#include "envcrust/interpolate.h"
 #include "envcrust/power_crust.h"
 #include "envcrust/progress.h"
 #include "envcrust/remesh.h"
@@ -41,6 +42,12 @@ struct ReconstructOptions {
   /// non-orientable result is cut along a seam and welded back; skipped with a warning for
   /// non-manifold results). nullopt: no remeshing.
   std::optional<remesh::RemeshOptions> remesh;
+  /// Mesh the samples themselves along the extracted sheet (interpolate::mesh_samples) and
+  /// keep that mesh in place of the sheet when its topology is the sheet's: the same Euler
+  /// characteristic, border loops, pieces and orientability, a manifold. The output then has
+  /// the input's resolution and the envelope's topology (ReconstructResult::sample_meshing).
+  /// Method::Envelope with Extraction::Sheet, without remeshing. nullopt: the sheet itself.
+  std::optional<interpolate::InterpolateOptions> mesh_samples;
   /// Check a uniform-rho run (Method::Envelope, Extraction::Sheet) and, when it fails, run
   /// again with adaptive rho (small where M is thin, large where it is sparse) and keep the
   /// run with fewer defects (RunDefects::is_better_than; ReconstructResult::adaptive_retry). It fails
@@ -160,6 +167,14 @@ struct StageTimes {
   double envelope = 0, power_crust = 0, extraction = 0, remesh = 0;
 };
 
+/// What became of the samples' mesh (ReconstructOptions::mesh_samples).
+struct SampleMeshing {
+  interpolate::InterpolateStats stats;
+  bool is_kept = false;          ///< it replaced the sheet
+  std::string sheet_topology;    ///< e.g. "chi -1, 3 loops, 1 piece, orientable"
+  std::string samples_topology;  ///< the same for the samples' mesh
+};
+
 /// Result of reconstruct.
 struct ReconstructResult {
   TriangleMesh mesh;                       ///< the reconstruction of M
@@ -170,6 +185,7 @@ struct ReconstructResult {
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
   std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
   std::optional<PowerCrustFallback> power_crust_fallback;  ///< set when the fallback ran
+  std::optional<SampleMeshing> sample_meshing;  ///< set when the samples were meshed
   /// The method whose result `mesh` is: options.method, or PowerCrust when the fallback's run
   /// was kept (then `envelope` and `sheet_stats` describe the envelope run it replaced).
   Method method = Method::Envelope;
@@ -183,7 +199,8 @@ struct ReconstructResult {
 /// Reconstruct M from its samples (points with normal lines and boundary curves): one run,
 /// a second with adaptive rho if the first fails the check of options.use_adaptive_retry,
 /// the direct Power Crust if the input has no boundary curves and the kept run still fails
-/// (options.use_power_crust_fallback), then the remeshing.
+/// (options.use_power_crust_fallback), then the samples' mesh (options.mesh_samples) or the
+/// remeshing.
 /// @throws InvalidInput, DegenerateInput, InvalidOptions from the stages.
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options = {}, const Progress& progress = {});

@@ -29,6 +29,36 @@ void remesh_result(ReconstructResult& out, const std::optional<remesh::RemeshOpt
   progress.report("remesh", 1.0);
 }
 
+std::string topology_summary(const topology::MeshTopology& t) {
+  const auto loops = t.boundary_loops.size();
+  const auto pieces = t.components.size();
+  return "chi " + std::to_string(t.euler_characteristic) + ", " + std::to_string(loops) +
+         (loops == 1 ? " loop, " : " loops, ") + std::to_string(pieces) + (pieces == 1 ? " piece, " : " pieces, ") +
+         (t.is_orientable ? "orientable" : "non-orientable") + (t.is_manifold() ? "" : ", not a manifold");
+}
+
+// The samples meshed along the sheet, in place of the sheet when the topologies agree.
+void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples& samples,
+                         const interpolate::InterpolateOptions& options, const Progress& progress) {
+  if (out.mesh.triangles.empty()) return;
+  progress.report("mesh samples", 0.0);
+  interpolate::InterpolateResult meshed = interpolate::mesh_samples(samples.points, out.mesh, options);
+  SampleMeshing report;
+  report.stats = meshed.stats;
+  if (!out.topology) out.topology = topology::analyze_topology(out.mesh);
+  topology::MeshTopology mine = topology::analyze_topology(meshed.mesh);
+  report.sheet_topology = topology_summary(*out.topology);
+  report.samples_topology = topology_summary(mine);
+  report.is_kept = !meshed.mesh.triangles.empty() && mine.is_manifold() && mine.duplicate_faces == 0 &&
+                   report.samples_topology == report.sheet_topology;
+  if (report.is_kept) {
+    out.mesh = std::move(meshed.mesh);
+    out.topology = std::move(mine);
+  }
+  out.sample_meshing = std::move(report);
+  progress.report("mesh samples", 1.0);
+}
+
 }  // namespace
 
 TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
@@ -345,6 +375,8 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
         samples.boundary.size() < kept->count(options.max_genus))
       power_crust_fallback(out, *kept, samples, options, groups, progress);
   }
+  if (options.mesh_samples && !options.remesh && is_sheet_run && out.method == Method::Envelope)
+    mesh_samples_result(out, samples, *options.mesh_samples, progress);
   remesh_result(out, options.remesh, progress);
   if (options.use_normal_orientation && out.method == Method::Envelope && is_sheet_run)
     topology::orient_along_normals(out.mesh, samples.points, samples.normals);

@@ -686,3 +686,29 @@ TEST_F(CliTest, reconstruct_merges_repeated_points) {
   EXPECT_EQ(b["analysis"]["boundary_loops"], 2);
   EXPECT_LT(b["analysis"]["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
 }
+
+// `--extract samples`: a point file comes out on its own points (the samples meshed along the
+// sheet); the default is the sheet; an unknown --extract value is a usage error.
+TEST_F(CliTest, reconstruct_meshes_a_point_files_own_points_when_asked) {
+  ASSERT_EQ(run_envcrust("sample hemisphere -n 5000 --seed 4 -q -o " + path("h.xyz")).exit_code, 0);
+  const auto samples = run_envcrust_json("reconstruct " + path("h.xyz") + " -r builtin:hemisphere -o " +
+                                         path("s.ply") + " --extract samples --json");
+  ASSERT_TRUE(samples.contains("sample_meshing"));
+  EXPECT_EQ(samples["sample_meshing"]["is_kept"], true);
+  EXPECT_EQ(samples["sample_meshing"]["samples_topology"], "chi 1, 1 loop, 1 piece, orientable");
+  EXPECT_EQ(samples["sample_meshing"]["sheet_topology"], "chi 1, 1 loop, 1 piece, orientable");
+  const auto& a = samples["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 1);
+  EXPECT_EQ(a["boundary_loops"], 1);
+  EXPECT_LE(a["vertices"].get<int>(), 5000);
+  EXPECT_GE(a["vertices"].get<int>(), 4950);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.005);
+  const auto sheet = run_envcrust_json("reconstruct " + path("h.xyz") + " -r builtin:hemisphere -o " +
+                                       path("t.ply") + " --json");
+  EXPECT_FALSE(sheet.contains("sample_meshing"));
+  EXPECT_EQ(sheet["analysis"]["euler_characteristic"], 1);
+  EXPECT_GT(sheet["analysis"]["vertices"].get<int>(), 5000);
+  const auto bad = run_envcrust("reconstruct " + path("h.xyz") + " -o " + path("u.ply") + " --extract faces");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--extract"), std::string::npos) << bad.err;
+}

@@ -1,0 +1,95 @@
+// CGAL's advancing front with a priority that refuses the candidates off the sheet. The front
+// asks for a facet's priority many times over (about 30 calls per output face), so each
+// facet's verdict is kept.
+#include "interpolate_detail.h"
+
+#include <CGAL/Advancing_front_surface_reconstruction.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <unordered_map>
+
+namespace envcrust::interpolate::detail {
+namespace {
+
+struct FacetKey {
+  std::array<const void*, 3> vertices;
+  bool operator==(const FacetKey&) const = default;
+};
+
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& key) const {
+    std::size_t h = 0;
+    for (const void* v : key.vertices)
+      h = h * 0x9E3779B97F4A7C15ULL + std::hash<const void*>()(v);
+    return h;
+  }
+};
+
+// The priority functor: CGAL's own (the smallest Delaunay sphere through the facet) for the
+// facets the guide allows, infinity (never added) for the others.
+class GuidedPriority {
+ public:
+  GuidedPriority(const std::vector<double>& spacing, const SheetGuide& guide, const InterpolateOptions& options,
+                 std::size_t& refused)
+      : spacing_(&spacing), guide_(&guide), options_(options), refused_(&refused),
+        allowed_(std::make_shared<std::unordered_map<FacetKey, bool, FacetKeyHash>>()) {}
+
+  template <typename AdvancingFront, typename CellHandle>
+  double operator()(const AdvancingFront& front, CellHandle& cell, const int& index) const {
+    std::array<const void*, 3> vertices;
+    std::array<Point3, 3> points;
+    for (int i = 0; i < 3; ++i) {
+      const auto v = cell->vertex((index + 1 + i) & 3);
+      vertices[i] = &*v;
+      points[i] = v->point();
+    }
+    std::sort(vertices.begin(), vertices.end());
+    const auto [it, is_new] = allowed_->try_emplace(FacetKey{vertices}, false);
+    if (is_new) {
+      double scale = 0;
+      for (int i = 0; i < 3; ++i) scale = std::max(scale, spacing_at(cell->vertex((index + 1 + i) & 3)));
+      it->second = guide_->allows(points[0], points[1], points[2], options_.max_sheet_distance_rel_spacing * scale,
+                                  options_.min_normal_cosine);
+      if (!it->second) ++*refused_;
+    }
+    if (!it->second) return std::numeric_limits<double>::infinity();
+    return front.smallest_radius_delaunay_sphere(cell, index);
+  }
+
+ private:
+  // The vertex's sample: CGAL's function numbers the points in input order (Vertex::id()).
+  template <typename VertexHandle>
+  double spacing_at(const VertexHandle& v) const {
+    const auto id = static_cast<std::size_t>(v->id());
+    return id < spacing_->size() ? (*spacing_)[id] : 0.0;
+  }
+
+  const std::vector<double>* spacing_;
+  const SheetGuide* guide_;
+  InterpolateOptions options_;
+  std::size_t* refused_;
+  // Shared: CGAL copies the functor.
+  std::shared_ptr<std::unordered_map<FacetKey, bool, FacetKeyHash>> allowed_;
+};
+
+}  // namespace
+
+std::vector<std::array<Index, 3>> guided_front(const std::vector<Point3>& samples,
+                                               const std::vector<double>& spacing, const SheetGuide& guide,
+                                               const InterpolateOptions& options, std::size_t& refused) {
+  std::vector<std::array<std::size_t, 3>> facets;
+  CGAL::advancing_front_surface_reconstruction(samples.begin(), samples.end(), std::back_inserter(facets),
+                                               GuidedPriority(spacing, guide, options, refused));
+  std::vector<std::array<Index, 3>> faces;
+  faces.reserve(facets.size());
+  for (const auto& f : facets)
+    faces.push_back({static_cast<Index>(f[0]), static_cast<Index>(f[1]), static_cast<Index>(f[2])});
+  return faces;
+}
+
+}  // namespace envcrust::interpolate::detail

@@ -1,0 +1,47 @@
+// Internals of mesh_samples: the sheet as a guide, the guided advancing front, hole closing.
+#pragma once
+
+#include "envcrust/interpolate.h"
+#include "envcrust/nearest_index.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace envcrust::interpolate::detail {
+
+/// The sheet as the front's guide: distance to it and its normal line near a point.
+class SheetGuide {
+ public:
+  explicit SheetGuide(const TriangleMesh& sheet);
+  /// Whether a triangle abc lies along the sheet: its centre within `max_distance` of the
+  /// sheet and its normal line within acos(min_cosine) of the sheet's there.
+  [[nodiscard]] bool allows(const Point3& a, const Point3& b, const Point3& c, double max_distance,
+                            double min_cosine) const;
+
+ private:
+  const TriangleMesh& sheet_;
+  std::vector<Index> original_;  // the sheet's index of each of used_
+  std::vector<Point3> used_;     // the vertices some face uses
+  NearestIndex vertex_index_;    // over used_
+  std::vector<std::size_t> face_start_;   // CSR: faces of vertex v at face_list_[face_start_[v] ..]
+  std::vector<std::size_t> face_list_;
+};
+
+/// The advancing front over `samples` (CGAL's, its default parameters) with the candidates
+/// the guide refuses taken out: those farther from the sheet than max_distance_rel_spacing
+/// times the largest `spacing` of their corners. Faces index `samples`. Adds the refusals to
+/// `refused`.
+std::vector<std::array<Index, 3>> guided_front(const std::vector<Point3>& samples,
+                                               const std::vector<double>& spacing, const SheetGuide& guide,
+                                               const InterpolateOptions& options, std::size_t& refused);
+
+/// Close the holes of `mesh` that lie off the sheet's border (see InterpolateOptions) with
+/// CGAL's hole triangulation over their own vertices; counts into `stats`.
+void close_holes_off_border(TriangleMesh& mesh, const std::vector<double>& spacing, const TriangleMesh& sheet,
+                            const InterpolateOptions& options, InterpolateStats& stats);
+
+/// Each sample's mean distance to its 6 nearest others.
+std::vector<double> local_spacing(const std::vector<Point3>& samples);
+
+}  // namespace envcrust::interpolate::detail
