@@ -304,7 +304,7 @@ def count_points(path):
 def run_envcrust(args, points, out_dir, truth_topo):
     out = os.path.join(out_dir, "envcrust.ply")
     code, stdout, err, seconds, peak = run([args.envcrust, "reconstruct", points, "-o", out, "--json",
-                                            "--quiet"], args.timeout)
+                                            "--quiet"] + args.envcrust_args.split(), args.timeout)
     result = {"seconds": round(seconds, 2), "peak_mb": peak and round(peak)}
     if code == "timeout":
         result["error"] = f"timeout after {args.timeout} s"
@@ -466,6 +466,8 @@ def main():
     parser.add_argument("--scans", default=os.environ.get("ENVCRUST_SHARED_DATA"),
                         help="the folder of the scans (env ENVCRUST_SHARED_DATA)")
     parser.add_argument("--envcrust", default=os.path.join(REPO, "build", "envcrust"))
+    parser.add_argument("--envcrust-args", default="",
+                        help="more options for every envcrust run, e.g. '--extract samples' (default: none)")
     parser.add_argument("--afsr", default=os.path.join(REPO, "build", "bench", "afsr_peer"))
     parser.add_argument("--shapes", help="comma-separated shapes (mesh names, scan:NAME, or open/closed/scans); "
                                          "default all")
