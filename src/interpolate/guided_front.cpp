@@ -1,4 +1,5 @@
-// CGAL's advancing front with a priority that refuses the candidates off the sheet. The front
+// CGAL's advancing front with a priority that refuses the candidates off the sheet, and the
+// long ones. The front
 // asks for a facet's priority many times over (about 30 calls per output face), so each
 // facet's verdict is kept.
 #include "interpolate_detail.h"
@@ -6,6 +7,7 @@
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <functional>
@@ -53,7 +55,11 @@ class GuidedPriority {
     if (is_new) {
       double scale = 0;
       for (int i = 0; i < 3; ++i) scale = std::max(scale, spacing_at(cell->vertex((index + 1 + i) & 3)));
-      it->second = guide_->allows(points[0], points[1], points[2], options_.max_sheet_distance_rel_spacing * scale,
+      const double longest = std::sqrt(std::max({CGAL::squared_distance(points[0], points[1]),
+                                                 CGAL::squared_distance(points[1], points[2]),
+                                                 CGAL::squared_distance(points[2], points[0])}));
+      it->second = longest <= kMaxEdgeRelSpacing * scale &&
+                   guide_->allows(points[0], points[1], points[2], options_.max_sheet_distance_rel_spacing * scale,
                                   options_.min_normal_cosine);
       if (!it->second) ++*refused_;
     }
