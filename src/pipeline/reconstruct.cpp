@@ -50,7 +50,7 @@ void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples&
   report.sheet_topology = topology_summary(*out.topology);
   report.samples_topology = topology_summary(mine);
   report.is_kept = !meshed.mesh.triangles.empty() && mine.is_manifold() && mine.duplicate_faces == 0 &&
-                   report.samples_topology == report.sheet_topology;
+                   mine.misoriented_edges == 0 && report.samples_topology == report.sheet_topology;
   if (report.is_kept) {
     out.mesh = std::move(meshed.mesh);
     out.topology = std::move(mine);
