@@ -31,22 +31,28 @@ std::vector<Point3> border_points(const TriangleMesh& sheet, std::vector<std::si
   return out;
 }
 
-// The sheet border loop most of the loop's vertices lie nearest to.
-std::size_t nearest_border_loop(const std::vector<Index>& loop, const TriangleMesh& mesh, const NearestIndex& border,
-                                const std::vector<std::size_t>& loop_of) {
-  std::map<std::size_t, std::size_t> votes;
-  for (const Index v : loop) ++votes[loop_of[border.nearest(mesh.vertices[v]).first]];
-  return std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; })
-      ->first;
-}
+// Where a loop of the meshed samples lies against the sheet's border: the median distance of
+// its vertices to it, and the sheet border loop most of them lie nearest to.
+struct BorderReading {
+  double median_distance = 0.0;
+  std::size_t sheet_loop = 0;
+};
 
-double median_distance(const std::vector<Index>& loop, const TriangleMesh& mesh, const NearestIndex& border) {
+BorderReading read_border(const std::vector<Index>& loop, const TriangleMesh& mesh, const NearestIndex& border,
+                          const std::vector<std::size_t>& loop_of) {
   std::vector<double> d;
   d.reserve(loop.size());
-  for (const Index v : loop) d.push_back(border.nearest(mesh.vertices[v]).second);
+  std::map<std::size_t, std::size_t> votes;
+  for (const Index v : loop) {
+    const auto [nearest, distance] = border.nearest(mesh.vertices[v]);
+    d.push_back(distance);
+    ++votes[loop_of[nearest]];
+  }
   const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
   std::nth_element(d.begin(), mid, d.end());
-  return *mid;
+  const auto most = std::max_element(votes.begin(), votes.end(),
+                                     [](const auto& a, const auto& b) { return a.second < b.second; });
+  return {*mid, most->first};
 }
 
 // Triangles over the loop's own vertices, wound to run each loop edge against the face that
@@ -88,10 +94,10 @@ void close_holes_off_border(TriangleMesh& mesh, const std::vector<double>& spaci
   for (std::size_t l = 0; l < loops.size(); ++l) {
     for (const Index v : loops[l].vertices) scale[l] = std::max(scale[l], spacing[v]);
     if (border.empty()) continue;
-    distance[l] = median_distance(loops[l].vertices, mesh, border_index);
+    const BorderReading reading = read_border(loops[l].vertices, mesh, border_index, loop_of);
+    distance[l] = reading.median_distance;
     if (distance[l] > options.border_reach_rel_spacing * scale[l]) continue;
-    const std::size_t sheet_loop = nearest_border_loop(loops[l].vertices, mesh, border_index, loop_of);
-    const auto [it, is_new] = closest.try_emplace(sheet_loop, l);
+    const auto [it, is_new] = closest.try_emplace(reading.sheet_loop, l);
     if (!is_new && distance[l] < distance[it->second]) it->second = l;
   }
   for (const auto& [sheet_loop, l] : closest) is_boundary[l] = true;

@@ -1,8 +1,12 @@
 // mesh_samples: the guide, the front, the holes, and the used samples as the vertices.
 #include "interpolate_detail.h"
 
+#include "envcrust/neighbour_table.h"
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace envcrust::interpolate {
@@ -15,16 +19,14 @@ constexpr Index kUnused = std::numeric_limits<Index>::max();
 namespace detail {
 
 std::vector<double> local_spacing(const std::vector<Point3>& samples) {
-  constexpr std::size_t kNeighbours = 6;
+  constexpr unsigned kNeighbours = 6;
   std::vector<double> out(samples.size(), 0.0);
   if (samples.size() < 2) return out;
-  const NearestIndex index(samples);
-  const std::size_t k = std::min(kNeighbours + 1, samples.size());
+  const NeighbourTable table(samples, kNeighbours);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     double sum = 0;
-    const auto near = index.nearest(samples[i], static_cast<unsigned>(k));
-    for (std::size_t j = 1; j < near.size(); ++j) sum += near[j].second;
-    out[i] = sum / static_cast<double>(near.size() - 1);
+    for (const std::uint32_t j : table.of(i)) sum += std::sqrt(CGAL::squared_distance(samples[i], samples[j]));
+    out[i] = sum / static_cast<double>(table.k());
   }
   return out;
 }
