@@ -13,6 +13,7 @@ jobs="${ENVCRUST_JOBS:-2}"
 
 packages=(cmake ninja-build g++ pkg-config libcgal-dev libeigen3-dev libtbb-dev libboost-dev
           libgmp-dev libmpfr-dev libcli11-dev nlohmann-json3-dev libgtest-dev libpng-dev
+          pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest
           libembree-dev libfreetype-dev fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
