@@ -91,6 +91,20 @@ def test_options_reach_the_run():
     assert crust.report["method"] == "powercrust"
 
 
+def test_closed_and_sample_meshing_options():
+    closed = envcrust.reconstruct(envcrust.sample("sphere", 3000, seed=1), detect_boundary=False)
+    assert (closed.report["analysis"]["euler_characteristic"], closed.report["analysis"]["boundary_loops"]) == (2, 0)
+    meshed = envcrust.reconstruct(envcrust.sample("hemisphere", 3000, seed=1), extract="samples")
+    assert meshed.report["sample_meshing"]["is_kept"] is True
+    assert len(meshed.vertices) == 3000
+    assert meshed.report["analysis"]["euler_characteristic"] == 1
+
+
+def test_library_option_checks_raise_invalid_options():
+    with pytest.raises(envcrust.InvalidOptions, match="^EnvelopeOptions::spacing_rel_rho out of range \\(got 10\\)$"):
+        envcrust.reconstruct(envcrust.sample("hemisphere", 500, seed=1), spacing=10)
+
+
 def test_progress_reports_each_stage_in_order():
     seen = []
     envcrust.reconstruct(envcrust.sample("hemisphere", 2000, seed=6), progress=lambda s, f: seen.append((s, f)))
