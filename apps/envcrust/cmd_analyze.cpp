@@ -4,6 +4,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "inputs.h"
+#include "html_output.h"
 
 #include "envcrust/errors.h"
 #include "envcrust/io.h"
@@ -20,6 +21,7 @@ struct AnalyzeCommand {
   std::string reference;
   std::string curve;
   std::string report_file;
+  std::string html_file;
   bool no_knots = false;
   analysis::AnalyzeOptions options;
   CommonFlags common;
@@ -50,13 +52,39 @@ void run_curve(const AnalyzeCommand& cmd) {
   }
 }
 
+// Runs a step on the mesh; with --html, a mesh it refuses still gets a page saying why (and
+// showing what could be read of it: `mesh`, else its vertices as points), then the error
+// ends the run as without --html.
+template <class Step>
+auto with_failure_page(const AnalyzeCommand& cmd, const std::string& title, const TriangleMesh* mesh, Step&& step) {
+  try {
+    return step();
+  } catch (const Error& e) {
+    if (cmd.html_file.empty()) throw;
+    TriangleMesh points_only;
+    if (!mesh && !is_parametric_spec(cmd.mesh)) {
+      try {
+        points_only.vertices = io::read_points(cmd.mesh).points;
+      } catch (const Error&) {
+        // Not even points: the page shows the message alone.
+      }
+      mesh = &points_only;
+    }
+    html::write_html_report(cmd.html_file, html::failure_page(title, mesh, e.what()));
+    throw;
+  }
+}
+
 void run_analyze(AnalyzeCommand& cmd) {
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
+  html::check_html_output(cmd.html_file);
+  check_distinct_outputs({{"--report", cmd.report_file}, {"--html", cmd.html_file}});
   check_outputs_are_not_inputs({{"mesh", cmd.mesh}, {"--reference", cmd.reference}, {"--curve", cmd.curve}},
-                               {{"--report", cmd.report_file}});
+                               {{"--report", cmd.report_file}, {"--html", cmd.html_file}});
   const auto thread_limit = limit_threads(cmd.common.threads);
   if (!cmd.curve.empty()) {
     if (!cmd.mesh.empty()) throw UsageError("analyze: give either MESH or --curve, not both");
+    if (!cmd.html_file.empty()) throw UsageError("analyze: --html shows a MESH, not a --curve");
     run_curve(cmd);
     return;
   }
@@ -66,14 +94,18 @@ void run_analyze(AnalyzeCommand& cmd) {
     throw IoError(cmd.mesh + ": a point file, not a mesh: analyze reads meshes (.ply, .off, .obj, .stl); "
                   "reconstruct it first, or give it as --reference, or as --curve if it is an ordered closed curve");
   }
-  const TriangleMesh mesh = load_mesh(cmd.mesh);
+  const std::string title = "envcrust analyze: " + cmd.mesh;
+  const TriangleMesh mesh = with_failure_page(cmd, title, nullptr, [&] { return load_mesh(cmd.mesh); });
   analysis::Reference reference;
   if (!cmd.reference.empty()) reference = load_reference(cmd.reference);
-  const auto report = analysis::analyze_mesh(mesh, reference, cmd.options);
+  const auto report =
+      with_failure_page(cmd, title, &mesh, [&] { return analysis::analyze_mesh(mesh, reference, cmd.options); });
   nlohmann::json j = analysis_json(report);
   j["mesh"] = cmd.mesh;
   if (!cmd.reference.empty()) j["reference"] = cmd.reference;
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, json_text(j));
+  if (!cmd.html_file.empty())
+    html::write_html_report(cmd.html_file, html::analyze_page(title, mesh, report, reference, cmd.reference, j));
   if (cmd.common.json) {
     print_json(j);
   } else if (!cmd.common.quiet) {
@@ -95,6 +127,9 @@ void register_analyze(CLI::App& app) {
   sub->add_option("--curve", cmd->curve,
                   "Analyze the knot type of one closed polyline (.polyline/.xyz) instead of a mesh");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
+  html::add_html_option(*sub, cmd->html_file,
+                        "the mesh (a mesh it cannot analyze gets a page saying why); with --reference, each vertex "
+                        "coloured by its distance to the reference");
   sub->add_option("--samples", cmd->options.distance.samples,
                   "Area samples per side for distance measurement")
       ->capture_default_str()

@@ -4,6 +4,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "curve_output.h"
+#include "html_output.h"
 #include "inputs.h"
 #include "output_vertex_data.h"
 #include "reconstruct_hints.h"
@@ -41,6 +42,7 @@ struct ReconstructCommand {
   std::string outliers_output;
   std::string reference;
   std::string report_file;
+  std::string html_file;
   bool no_analysis = false;
   bool no_adaptive_retry = false;
   bool no_power_crust_fallback = false;
@@ -218,11 +220,13 @@ void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   if (!cmd.boundary_output.empty()) check_curve_output(cmd.boundary_output);
   if (!cmd.outliers_output.empty()) io::check_output_path(cmd.outliers_output, io::OutputKind::Points);
   if (!cmd.report_file.empty()) io::check_output_path(cmd.report_file, io::OutputKind::Text);
+  html::check_html_output(cmd.html_file);
   const std::vector<std::pair<std::string, std::string>> outputs = {{"-o", cmd.output},
                                                                     {"--envelope-out", cmd.envelope_output},
                                                                     {"--boundary-out", cmd.boundary_output},
                                                                     {"--outliers-out", cmd.outliers_output},
-                                                                    {"--report", cmd.report_file}};
+                                                                    {"--report", cmd.report_file},
+                                                                    {"--html", cmd.html_file}};
   check_distinct_outputs(outputs);
   std::vector<std::pair<std::string, std::string>> inputs = {{"input", cmd.input}, {"--reference", cmd.reference}};
   for (const auto& f : cmd.sampling.boundary_files) inputs.emplace_back("--boundary", f);
@@ -363,6 +367,10 @@ void run_reconstruct(ReconstructCommand& cmd) {
   if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
   write_outliers(cmd, loaded);
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, report_text);
+  if (!cmd.html_file.empty())
+    html::write_html_report(cmd.html_file,
+                            html::reconstruct_page("envcrust reconstruct: " + cmd.input + " -> " + cmd.output, result.mesh,
+                                                   report ? &*report : nullptr, loaded.samples.points, failed, hints, j));
   if (cmd.common.json || cmd.common.quiet) {
     if (cmd.common.json) print_json(j);
     throw_if_failed(cmd, failed);
@@ -519,6 +527,8 @@ void register_reconstruct(CLI::App& app) {
                 "sparser samples of a closed surface, then runs too and is kept if it has fewer defects and caps "
                 "no hole)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
+  html::add_html_option(*sub, cmd->html_file,
+                        "the result, each vertex coloured on demand by its distance to the nearest input point");
   add_common_flags(*sub, cmd->common);
   sub->footer(
       "Exit codes: 0 the result was written and passes its checks; 1 bad input, or a run refused before it\n"
