@@ -211,21 +211,25 @@ async function main() {
   function draw() {
     renderer.render(scene, camera);
   }
+  // Until the user turns or zooms the view, a new size of the window frames the result again.
+  let isMovedByUser = false;
   function resize() {
     const width = Math.max(viewBox.clientWidth, 1);
     const height = Math.max(viewBox.clientHeight, 1);
     renderer.setSize(width, height, false);
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
+    if (!isMovedByUser) resetView();
     draw();
   }
+  controls.addEventListener('start', () => { isMovedByUser = true; });
   controls.addEventListener('change', draw);
   new ResizeObserver(resize).observe(viewBox);
   resetView();
 
   const loopToggle = document.getElementById('show-loops');
   loopToggle.addEventListener('change', () => { loops.visible = loopToggle.checked; draw(); });
-  document.getElementById('reset-view').addEventListener('click', () => { resetView(); draw(); });
+  document.getElementById('reset-view').addEventListener('click', () => { isMovedByUser = false; resetView(); draw(); });
 
   const distanceToggle = document.getElementById('show-distance');
   if (info.distance && front) {
