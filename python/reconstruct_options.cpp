@@ -70,7 +70,7 @@ const std::map<std::string, Setter>& setters() {
        }},
       {"extract",
        [](ReconstructSettings& s, const py::handle& v) {
-         s.extract = one_of(v, "extract", {"sheet", "samples", "powershape"});
+         s.extract = v.is_none() ? "" : one_of(v, "extract", {"sheet", "samples", "powershape"});
          s.options.extraction = s.extract == "powershape" ? pipeline::Extraction::PowerShape : pipeline::Extraction::Sheet;
        }},
       {"orientable",
@@ -125,7 +125,8 @@ Options (keywords; the defaults are those of `envcrust reconstruct`):
   seed=1                    seed of the envelope's thinning
   threads=0                 threads to run on; 0: every core
   method='envelope'         or 'powercrust' (plain Power Crust: closes every boundary)
-  extract='sheet'           or 'samples' (the points meshed along the sheet) or 'powershape'
+  extract=None              'sheet', 'samples' (the points meshed along the sheet) or 'powershape';
+                            None: as the CLI chooses for a point file
   orientable='auto'         'yes' (True): cut out twists; 'no' (False): never
   cut_handles=None          cut handles narrower than this many rho; None: 1.5 for point clouds
   remesh=False              remesh the result isotropically
@@ -162,6 +163,7 @@ pipeline::ReconstructOptions options_for_run(const ReconstructSettings& settings
   if (settings.use_remesh) options.remesh = remesh::RemeshOptions{};
   options = pipeline::options_for_input(kind, options);
   if (settings.extract == "samples") options.mesh_samples = interpolate::InterpolateOptions{};
+  if (settings.extract == "sheet") options.mesh_samples.reset();
   auto& sheet = options.sheet;
   if (settings.orientable == "yes") {
     sheet.cut_to_orientable = true;

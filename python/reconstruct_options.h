@@ -17,7 +17,7 @@ namespace envcrust::python {
 struct ReconstructSettings {
   pipeline::ReconstructOptions options;  ///< before options_for_input (the envelope's, method, extraction)
   input::InputOptions input;             ///< outliers, boundary detection, creases; name "points"
-  std::string extract = "sheet";         ///< sheet, samples or powershape (--extract)
+  std::string extract;                   ///< sheet, samples or powershape (--extract); empty: by input
   std::string orientable = "auto";       ///< auto, yes or no (--orientable)
   std::optional<double> cut_handles;     ///< --cut-handles; unset: by input
   bool use_remesh = false;               ///< --remesh
