@@ -10,7 +10,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ENVCRUST_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 jobs="${ENVCRUST_JOBS:-2}"
-all_readers=(ply off obj stl xyz pts csv iges nurbs_json polyline balls)
+all_readers=(ply off obj stl xyz pts csv iges nurbs_json polyline balls las)
 seconds=60
 if_available=0
 readers=()

@@ -29,9 +29,16 @@ namespace envcrust::io {
 ///    other non-list vertex property (alpha, intensity, ...) a scalar of its name.
 ///  - `.off/.obj/.stl`: the vertices of the mesh (normals: none; `.obj` colours "v x y z r g b",
 ///    0..1 or 0..255, when every vertex has one).
+///  - `.las`: LAS 1.0 to 1.4, point data formats 0 to 10 (extra bytes per record skipped):
+///    X, Y, Z times the header's scale plus its offset, in double; RGB of formats 2, 3, 5, 7, 8
+///    and 10 as colours (16-bit scaled down, unless every value is within 0..255: then 8-bit);
+///    the scalars "intensity" and "classification" (the class number, 0..31 for formats 0 to 5).
+///    Compressed files (`.laz`, or the format id's compression bit) are refused, naming laszip
+///    and pdal as ways to decompress them.
 /// @throws IoError one line naming the file and the problem, e.g.
 ///   "scan.xyz:12: expected at least 3 numbers ..., got 2", "scan.ply: truncated binary data
-///   (vertex 17 of 100)", "a.xyz:3: non-finite coordinate", "a.xyz: no points".
+///   (vertex 17 of 100)", "a.xyz:3: non-finite coordinate", "a.xyz: no points", "a.las: truncated
+///   point data: the header announces 1000 points of 26 bytes, the file holds 500".
 AttributedPoints read_attributed_points(const std::filesystem::path& path);
 
 /// read_attributed_points without the attributes.

@@ -48,8 +48,11 @@ AttributedPoints read_attributed_points(const std::filesystem::path& path) {
   if (is_text_point_file(path)) {
     return detail::read_xyz(path);
   }
+  if (extension == "las" || extension == "laz") {
+    return detail::read_las(path);
+  }
   if (extension != "ply" && extension != "off" && extension != "obj" && extension != "stl") {
-    detail::unknown_extension(path, ".xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl");
+    detail::unknown_extension(path, ".xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl, .las");
   }
   detail::RawMesh mesh = read_raw_mesh(path, extension);
   if (mesh.vertices.empty()) {

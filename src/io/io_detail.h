@@ -123,6 +123,8 @@ RawMesh read_off(const std::filesystem::path& path);
 RawMesh read_obj(const std::filesystem::path& path);
 RawMesh read_stl(const std::filesystem::path& path);
 AttributedPoints read_xyz(const std::filesystem::path& path);
+/// A LAS point cloud (.las; a .laz file, or a LAS file marked compressed, is refused).
+AttributedPoints read_las(const std::filesystem::path& path);
 /// The rational B-spline surfaces of an IGES file, trimmed or not (read_nurbs_patches).
 std::vector<surfaces::NurbsPatch> read_iges_patches(const std::filesystem::path& path);
 

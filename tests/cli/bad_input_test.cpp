@@ -51,7 +51,7 @@ class BadInputFile : public CliTest {
 TEST_F(BadInputFile, every_point_reader_refusal_is_one_line_naming_the_file_and_exit_1) {
   const BadFile cases[] = {
       {"none.xyz", "<absent>", ": cannot open file"},
-      {"a.foo", "0 0 0\n", ": unknown extension '.foo' (expected .xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl)"},
+      {"a.foo", "0 0 0\n", ": unknown extension '.foo' (expected .xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl, .las)"},
       {"trunc.ply", truncated_ply(), ": truncated binary data (vertex 0 of 3)"},
       {"nan.xyz", "0 0 0\n1 nan 0\n", ":2: non-finite coordinate"},
       {"inf.pts", "0 0 0\n1 inf 0\n", ":2: non-finite coordinate"},

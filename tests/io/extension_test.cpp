@@ -21,13 +21,13 @@ TEST_F(Extension, read_points_names_unknown_extension_and_expected_ones) {
   const auto file = write("a.foo", "1 2 3\n");
   EXPECT_EQ(io_error_of([&] { read_points(file); }),
             file.string() +
-                ": unknown extension '.foo' (expected .xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl)");
+                ": unknown extension '.foo' (expected .xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl, .las)");
 }
 
 TEST_F(Extension, read_points_reports_missing_extension) {
   const auto file = write("points", "1 2 3\n");
   EXPECT_EQ(io_error_of([&] { read_points(file); }),
-            file.string() + ": no extension (expected .xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl)");
+            file.string() + ": no extension (expected .xyz, .pts, .txt, .csv, .ply, .off, .obj, .stl, .las)");
 }
 
 TEST_F(Extension, read_polygon_mesh_names_unknown_extension) {
