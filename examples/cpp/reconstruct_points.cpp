@@ -41,7 +41,10 @@ int main(int argc, char** argv) {
     vertex_data.normals = envcrust::normals::mesh_vertex_normal_lines(result.mesh);
     vertex_data.attributes =
         envcrust::attributes::carry_nearest(prepared.attribute_points, prepared.attributes, result.mesh.vertices);
-    envcrust::io::write_mesh(argv[2], result.mesh, vertex_data);
+    // Written in the file's coordinates: a georeferenced input was worked on near a local origin.
+    envcrust::TriangleMesh written = result.mesh;
+    envcrust::input::restore_origin(written.vertices, prepared.origin);
+    envcrust::io::write_mesh(argv[2], written, vertex_data);
 
     const auto topology = envcrust::topology::analyze_topology(result.mesh);
     std::cout << argv[1] << ": " << prepared.samples.points.size() << " points, " << prepared.samples.boundary.size()

@@ -53,6 +53,14 @@ struct InputOptions {
   boundary::BoundaryOptions boundary;
   /// Meshes, patch models and points with normals: what is done with sharp creases.
   CreaseMode creases = CreaseMode::Round;
+  /// Points: keep only those whose "classification" attribute is one of these (a LAS file's
+  /// classes: 2 ground, 6 building, ...), before anything else; empty: every point.
+  std::vector<int> classes;
+  /// Points and meshes lying farther from (0, 0, 0) than 100 times their diagonal (a scan in
+  /// UTM metres, ~500,000 / 5,000,000): work relative to a local origin near them
+  /// (PreparedInput::origin), as the stages' squared distances would spend the digits of the
+  /// shape on the position. false: the coordinates as given.
+  bool use_local_origin = true;
 };
 
 /// Boundary points given for a point set instead of detected (`--boundary FILE`): each marks
@@ -78,6 +86,11 @@ struct PointInput {
 /// Samples of M and how they were obtained.
 struct PreparedInput {
   envelope::SurfaceSamples samples;  ///< unit normal lines; boundary curves; creases (CreaseMode::Join)
+  /// The input's coordinates are the samples' plus this (and those of `outliers` and
+  /// `attribute_points`): a local origin near an input far from (0, 0, 0) for its size
+  /// (InputOptions::use_local_origin), else zero. Add it back to what is written
+  /// (restore_origin), and subtract it from a reference given in the input's coordinates.
+  Vector3 origin = CGAL::NULL_VECTOR;
   /// What reconstruct's defaults depend on (pipeline::options_for_input): built-in or not,
   /// normals estimated, a mesh's own orientability and genus, boundary detected.
   pipeline::InputKind kind;
@@ -107,11 +120,14 @@ class NotASurface : public InvalidInput {
 /// keeping its first occurrence's normal and attributes), stray samples removed, normal lines
 /// fitted by PCA when none are given (or, CreaseMode::Round, when the given ones jump across
 /// long creases; then turned to agree with them), and boundary curves given, detected or none.
-/// One neighbour search serves outliers, normals and detection.
+/// Only the points of InputOptions::classes are kept, first; an input far from the origin
+/// is moved to a local one (PreparedInput::origin), the given boundary points with it. One
+/// neighbour search serves outliers, normals and detection.
 /// @param progress reports "input: neighbours", "input: outliers", "input: creases",
 ///   "input: normals", "input: boundary".
-/// @throws InvalidInput "point 7 has a zero normal"; about the given boundary points, named by
-///   GivenBoundary::name.
+/// @throws InvalidInput "point 7 has a zero normal"; "no point is of class 7 (the points' classes:
+///   1 (120 points), 2 (3000 points))", "the points have no classification to choose classes 2
+///   from (...)"; about the given boundary points, named by GivenBoundary::name.
 /// @throws DegenerateInput "need at least 5 distinct points, got 2 (48 duplicates merged)",
 ///   "all 100 points lie on a line (...): no surface to reconstruct". Messages start with
 ///   InputOptions::name when it is set ("scan.xyz: ...").
@@ -120,17 +136,22 @@ PreparedInput prepare_points(PointInput input, const InputOptions& options = {},
 /// Samples of M from a triangle mesh: vertices at the same coordinates welded, repeated and
 /// degenerate faces dropped; the used vertices with area-weighted normal lines and the face
 /// centres with face normals; the border loops as boundary curves; the mesh's orientability
-/// and genus in `kind`; long sharp creases rounded off or joined (InputOptions::creases).
+/// and genus in `kind`; long sharp creases rounded off or joined (InputOptions::creases); a mesh
+/// far from the origin moved to a local one (PreparedInput::origin).
 /// Attributes are not read from a mesh: set attribute_points and attributes from the file.
 /// @throws InvalidInput "the mesh has no faces", "the mesh has no faces but 2 that use a vertex
 ///   twice", "the mesh has no face of positive area", a non-finite vertex ("vertex 3 ...").
 /// @throws NotASurface "edge (0, 1) has 3 faces: the mesh is not a surface".
 PreparedInput prepare_mesh(TriangleMesh mesh, const InputOptions& options = {});
 
+/// Points of the prepared samples' frame moved back to the input's coordinates: each plus
+/// `origin` (PreparedInput::origin); nothing happens when it is zero.
+void restore_origin(std::vector<Point3>& points, const Vector3& origin);
+
 /// Samples of M drawn from a patch model (a built-in surface or the patches of a NURBS file):
 /// `sampling` points with their exact normals, the model's exact boundary curves, its genus
 /// (several patches), and the creases where patches meet at an angle rounded off or joined.
-/// `kind.is_builtin` stays true: exact samples get no scan settings.
+/// `kind.is_builtin` stays true: exact samples get no scan settings. The origin stays zero.
 /// @throws InvalidOptions as surfaces::sample_surface does.
 PreparedInput prepare_model(const models::PatchModel& model, const surfaces::SampleOptions& sampling,
                             const InputOptions& options = {});

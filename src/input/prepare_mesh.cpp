@@ -2,6 +2,7 @@
 // border loops, the mesh's own topology, its long sharp creases.
 #include "creases.h"
 #include "input_names.h"
+#include "local_origin.h"
 
 #include "envcrust/input.h"
 #include "envcrust/mesh.h"
@@ -62,7 +63,14 @@ void add_vertex_and_face_samples(const TriangleMesh& mesh, const std::vector<Vec
 PreparedInput prepare_mesh(TriangleMesh input, const InputOptions& options) {
   PreparedInput out;
   out.kind.is_builtin = false;
-  const TriangleMesh mesh = cleaned(std::move(input), options.name, out.notes);
+  TriangleMesh mesh = cleaned(std::move(input), options.name, out.notes);
+  if (options.use_local_origin) {
+    out.origin = local_origin(mesh.vertices);
+    if (out.origin != CGAL::NULL_VECTOR) {
+      out.notes.push_back(origin_note(mesh.vertices, out.origin));
+      subtract_origin(mesh.vertices, out.origin);
+    }
+  }
   const auto vertex_normals = normals::mesh_vertex_normal_lines(mesh);
   try {
     out.samples.boundary = boundary::mesh_boundary_curves(mesh, vertex_normals);

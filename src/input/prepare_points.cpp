@@ -1,6 +1,8 @@
 // Samples of M from a point set: stray samples, normal lines, creases, boundary curves.
 #include "creases.h"
 #include "input_names.h"
+#include "local_origin.h"
+#include "point_classes.h"
 #include "usable_points.h"
 
 #include "envcrust/input.h"
@@ -99,6 +101,15 @@ void detect_boundary(const NeighbourTable& table, const InputOptions& options, c
 
 PreparedInput prepare_points(PointInput input, const InputOptions& options, const Progress& progress) {
   PreparedInput out;
+  keep_classes(input.points, options.classes, options.name, out.notes);
+  if (options.use_local_origin) {
+    out.origin = local_origin(input.points.points.points);
+    if (out.origin != CGAL::NULL_VECTOR) {
+      out.notes.push_back(origin_note(input.points.points.points, out.origin));
+      subtract_origin(input.points.points.points, out.origin);
+      if (input.given_boundary) subtract_origin(input.given_boundary->points.points, out.origin);
+    }
+  }
   AttributedPoints usable =
       usable_points(std::move(input.points), input.are_normals_text_columns, options.name, out.notes);
   PointSet& points = usable.points;
