@@ -167,6 +167,8 @@ Run run(input::PointInput points, const ReconstructSettings& settings, const Pro
   out.normals = normals::mesh_vertex_normal_lines(out.result.mesh);
   out.attributes =
       attributes::carry_nearest(out.prepared.attribute_points, out.prepared.attributes, out.result.mesh.vertices);
+  // Returned in the input's coordinates; the stages ran near a local origin (input::PreparedInput::origin).
+  input::restore_origin(out.result.mesh.vertices, out.prepared.origin);
   progress.report("analysis", 1.0);
   return out;
 }

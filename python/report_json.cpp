@@ -109,6 +109,8 @@ nlohmann::json reconstruct_json(const input::PreparedInput& prepared, const pipe
                       {"notes", prepared.notes}};
   j.update(cli::run_stages_json(result, options));
   j["threads"] = threads;
+  if (prepared.origin != CGAL::NULL_VECTOR)
+    j["input_origin"] = {prepared.origin.x(), prepared.origin.y(), prepared.origin.z()};
   if (prepared.detection && !prepared.detection->loop_widths.empty())
     j["input_boundary_widths"] = prepared.detection->loop_widths;
   if (checks.analysis) {

@@ -69,6 +69,21 @@ def test_colours_reach_the_nearest_vertices():
     assert np.array_equal(result.colors[far_from_the_cut], expected[far_from_the_cut])
 
 
+def test_points_far_from_the_origin_come_back_in_their_own_coordinates():
+    points = envcrust.sample("hemisphere", 3000, seed=8)
+    offset = np.array([500000.0, 5000000.0, 100.0])  # UTM-like metres
+    near = envcrust.reconstruct(points)
+    far = envcrust.reconstruct(points + offset)
+    assert far.report["input_origin"] is not None
+    assert far.faces.shape == near.faces.shape
+    # The same surface to within 1e-6 of the diagonal: each vertex, moved back, is one of the other's.
+    diagonal = np.linalg.norm(points.max(axis=0) - points.min(axis=0))
+    moved_back = far.vertices - offset
+    nearest = [np.sqrt(((near.vertices - v) ** 2).sum(axis=1)).min() for v in moved_back]
+    assert max(nearest) < 1e-6 * diagonal
+    assert far.report["analysis"]["euler_characteristic"] == near.report["analysis"]["euler_characteristic"] == 1
+
+
 def test_float_colours_in_0_1_are_scaled_to_bytes():
     points = envcrust.sample("hemisphere", 2000, seed=3)
     result = envcrust.reconstruct(points, colors=np.full((2000, 3), 0.5))
