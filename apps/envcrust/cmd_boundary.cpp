@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "curve_output.h"
+#include "input_frame.h"
 #include "inputs.h"
 #include "surface_input.h"
 
@@ -155,6 +156,7 @@ void run_boundary(BoundaryCommand& cmd) {
   }
   const Progress progress = terminal_progress(cmd.common.quiet || cmd.common.json);
   const LoadedSurface loaded = load_surface(cmd.input, cmd.sampling, progress);
+  if (reference) reference = in_samples_frame(std::move(*reference), loaded.origin);
   // Distances in fractions of the reference's diagonal when there is one, as analyze gives them.
   const double diagonal = reference && reference->mesh   ? mesh::bbox_diagonal(reference->mesh->vertices)
                           : reference && !reference->points.empty() ? mesh::bbox_diagonal(reference->points)
@@ -176,7 +178,7 @@ void run_boundary(BoundaryCommand& cmd) {
     j["reference"] = reference_json(*reference, loaded, diagonal, j["curves"]);
     j["reference"]["file"] = cmd.reference.empty() ? cmd.input : cmd.reference;
   }
-  if (!cmd.output.empty()) j["files"] = write_curves(cmd.output, loaded.samples.boundary);
+  if (!cmd.output.empty()) j["files"] = write_curves(cmd.output, in_input_frame(loaded.samples.boundary, loaded.origin));
   if (!cmd.points_output.empty()) {
     PointSet flagged;
     if (loaded.detection) {
@@ -187,7 +189,7 @@ void run_boundary(BoundaryCommand& cmd) {
         flagged.normals.push_back(d.conormals[i]);
       }
     }
-    io::write_points(cmd.points_output, flagged);
+    io::write_points(cmd.points_output, in_input_frame(std::move(flagged), loaded.origin));
     j["points_file"] = cmd.points_output;
   }
   if (cmd.common.json) {
@@ -204,7 +206,7 @@ void register_boundary(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "boundary", "Find the boundary curves of a point cloud (as reconstruct does) and report them, alone");
   sub->add_option("input", cmd->input,
-                  "A point file (.xyz/.pts/.txt/.csv/.ply; normals optional), builtin:NAME or a NURBS file (.igs/.iges/.json, one patch or several; sampled "
+                  "A point file (.xyz/.pts/.txt/.csv/.ply/.las; normals optional), builtin:NAME or a NURBS file (.igs/.iges/.json, one patch or several; sampled "
                   "without its normals and boundary, which are then estimated), or a mesh (its border loops)")
       ->required();
   sub->add_option("-o,--output", cmd->output,

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "curve_output.h"
 #include "html_output.h"
+#include "input_frame.h"
 #include "inputs.h"
 #include "output_vertex_data.h"
 #include "reconstruct_hints.h"
@@ -69,7 +70,7 @@ std::optional<double> parse_rho(const std::string& text) {
 }
 
 void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
-  sub.add_option("input", cmd.input, "builtin:NAME, a NURBS file (.igs/.iges IGES entities 128/144, .json NURBS-Python; several patches are joined into one model), a point file (.xyz/.pts/.txt/.csv/.ply; normals optional), or a mesh (.off/.obj/.stl/.ply)")
+  sub.add_option("input", cmd.input, "builtin:NAME, a NURBS file (.igs/.iges IGES entities 128/144, .json NURBS-Python; several patches are joined into one model), a point file (.xyz/.pts/.txt/.csv/.ply/.las; normals optional), or a mesh (.off/.obj/.stl/.ply)")
       ->required();
   sub.add_option("--rho", cmd.rho,
                  "Envelope radius: 'auto' (half the estimated reach, the reach taken as at most 10% of the "
@@ -128,6 +129,7 @@ void add_input_options(CLI::App& sub, ReconstructCommand& cmd) {
                  "per file (FILE.i.polyline when several), or .xyz/.ply, all vertices as one point file "
                  "(normals = outward conormals)");
   add_outlier_options(sub, cmd.sampling);
+  add_classes_option(sub, cmd.sampling);
   add_crease_options(sub, cmd.sampling);
   add_join_option(sub, cmd.sampling.join);
   sub.add_option("--outliers-out", cmd.outliers_output,
@@ -161,7 +163,7 @@ void write_outliers(const ReconstructCommand& cmd, const LoadedSurface& loaded) 
   if (cmd.outliers_output.empty()) return;
   PointSet removed;
   removed.points = loaded.outliers;
-  io::write_points(cmd.outliers_output, removed);
+  io::write_points(cmd.outliers_output, in_input_frame(std::move(removed), loaded.origin));
 }
 
 // The options for the loaded input (pipeline::options_for_input: a scan's sheet cut at handles
@@ -279,7 +281,8 @@ void run_reconstruct(ReconstructCommand& cmd) {
   check_rho(cmd, loaded);
   // A reference that cannot be read fails now, not after the run.
   std::optional<analysis::Reference> given_reference;
-  if (!cmd.reference.empty() && !cmd.no_analysis) given_reference = load_reference(cmd.reference);
+  if (!cmd.reference.empty() && !cmd.no_analysis)
+    given_reference = in_samples_frame(load_reference(cmd.reference), loaded.origin);
   auto result = naming_input(cmd.input, [&] { return pipeline::reconstruct(loaded.samples, cmd.options, progress); });
   if (result.mesh.triangles.empty())
     throw NumericalFailure(empty_result_reason(cmd, loaded, result.envelope, "the reconstruction is empty"));
@@ -292,6 +295,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
   j["threads"] = allowed_threads();
   if (loaded.kind.is_orientable) j["input_is_orientable"] = *loaded.kind.is_orientable;
   if (loaded.kind.genus) j["input_genus"] = *loaded.kind.genus;
+  if (loaded.origin != CGAL::NULL_VECTOR) j["input_origin"] = {loaded.origin.x(), loaded.origin.y(), loaded.origin.z()};
   if (loaded.detection && !loaded.detection->loop_widths.empty())
     j["input_boundary_widths"] = loaded.detection->loop_widths;
   std::vector<std::string> warnings = loaded.warnings;
@@ -308,7 +312,7 @@ void run_reconstruct(ReconstructCommand& cmd) {
       reference = std::move(*given_reference);
       j["reference"] = cmd.reference;
     } else if (is_parametric_spec(cmd.input) || loaded.source == "mesh") {
-      reference = load_reference(cmd.input, cmd.sampling.join);
+      reference = in_samples_frame(load_reference(cmd.input, cmd.sampling.join), loaded.origin);
       j["reference"] = cmd.input;
     } else {
       reference.points = loaded.samples.points;
@@ -355,16 +359,17 @@ void run_reconstruct(ReconstructCommand& cmd) {
   j["output_vertex_data"] = vertex_data_json(vertex_data);
   // Every output is written once nothing can fail any more, so a failed run leaves none.
   const std::string report_text = json_text(j);
-  io::write_mesh(cmd.output, result.mesh, vertex_data);
+  io::write_mesh(cmd.output, in_input_frame(result.mesh, loaded.origin), vertex_data);
   if (!cmd.envelope_output.empty()) {
     PointSet env;
     for (const auto& s : result.envelope.samples) {
       env.points.push_back(s.position);
       env.normals.push_back(s.direction);
     }
-    io::write_points(cmd.envelope_output, env);
+    io::write_points(cmd.envelope_output, in_input_frame(std::move(env), loaded.origin));
   }
-  if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
+  if (!cmd.boundary_output.empty())
+    write_curves(cmd.boundary_output, in_input_frame(loaded.samples.boundary, loaded.origin));
   write_outliers(cmd, loaded);
   if (!cmd.report_file.empty()) io::write_text(cmd.report_file, report_text);
   if (!cmd.html_file.empty())
@@ -405,14 +410,15 @@ void run_envelope(ReconstructCommand& cmd) {
   const auto env = naming_input(cmd.input, [&] { return envelope::sample_envelope(loaded.samples, cmd.options.envelope); });
   progress.report("envelope", 1.0);
   if (env.samples.empty()) throw NumericalFailure(empty_result_reason(cmd, loaded, env, "the envelope has no samples"));
-  if (!cmd.boundary_output.empty()) write_curves(cmd.boundary_output, loaded.samples.boundary);
+  if (!cmd.boundary_output.empty())
+    write_curves(cmd.boundary_output, in_input_frame(loaded.samples.boundary, loaded.origin));
   write_outliers(cmd, loaded);
   PointSet points;
   for (const auto& s : env.samples) {
     points.points.push_back(s.position);
     points.normals.push_back(s.direction);
   }
-  io::write_points(cmd.output, points);
+  io::write_points(cmd.output, in_input_frame(std::move(points), loaded.origin));
   nlohmann::json j = {{"input", cmd.input}, {"output", cmd.output}, {"envelope", envelope_json(env)},
                       {"warnings", env.warnings}};
   if (cmd.common.json) {

@@ -194,7 +194,17 @@ void add_outlier_options(CLI::App& sub, InputSettings& sampling) {
                "the residual there, or 4 times farther from them than those are from theirs)");
 }
 
+void add_classes_option(CLI::App& sub, InputSettings& sampling) {
+  sub.add_option("--classes", sampling.preparation.classes,
+                 "Point files: keep only the points of these classes, e.g. 2,6 (a LAS file's classification: "
+                 "2 ground, 6 building, ...; a point file's column named 'classification'); default: all")
+      ->delimiter(',')
+      ->check(CLI::Range(0, 255));
+}
+
 LoadedSurface load_surface(const std::string& spec, const InputSettings& sampling, const Progress& progress) {
+  if (!sampling.preparation.classes.empty() && is_parametric_spec(spec))
+    throw UsageError("--classes applies to point files: " + spec + " has no classes");
   if (!sampling.boundary_files.empty() && is_parametric_spec(spec) && !sampling.builtin_as_points)
     throw UsageError("--boundary applies to point files: " + spec + " brings its exact boundary");
   if (sampling.mesh_as_points && is_parametric_spec(spec))
@@ -211,6 +221,8 @@ LoadedSurface load_surface(const std::string& spec, const InputSettings& samplin
     }
   }
   if (mesh && sampling.mesh_as_points) return load_mesh_vertices(*mesh, spec, sampling, progress);
+  if (mesh && !sampling.preparation.classes.empty())
+    throw UsageError("--classes applies to point files: the mesh " + spec + " has no classes");
   if (mesh) {
     if (!sampling.boundary_files.empty())
       throw UsageError("--boundary applies to point files: the mesh " + spec + " brings its border loops");

@@ -56,6 +56,9 @@ void add_crease_options(CLI::App& command, InputSettings& sampling);
 /// `--join-tolerance` (models::JoinOptions::tolerance_rel_diag) into `join`.
 void add_join_option(CLI::App& command, models::JoinOptions& join);
 
+/// `--classes LIST` (input::InputOptions::classes): keep only the points of these classes.
+void add_classes_option(CLI::App& command, InputSettings& sampling);
+
 /// Add --keep-outliers (point files: keep the samples find_outliers flags).
 void add_outlier_options(CLI::App& command, InputSettings& sampling);
 

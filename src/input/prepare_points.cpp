@@ -6,6 +6,7 @@
 #include "usable_points.h"
 
 #include "envcrust/input.h"
+#include "envcrust/mesh.h"
 #include "envcrust/neighbour_table.h"
 #include "envcrust/normals.h"
 #include "envcrust/outliers.h"
@@ -102,6 +103,9 @@ void detect_boundary(const NeighbourTable& table, const InputOptions& options, c
 PreparedInput prepare_points(PointInput input, const InputOptions& options, const Progress& progress) {
   PreparedInput out;
   keep_classes(input.points, options.classes, options.name, out.notes);
+  // The digits a far input kept are those of its own coordinates: checked before the move
+  // to a local origin, which cannot bring back what the file's doubles rounded away.
+  naming(options.name, [&] { mesh::check_coordinates(input.points.points.points); });
   if (options.use_local_origin) {
     out.origin = local_origin(input.points.points.points);
     if (out.origin != CGAL::NULL_VECTOR) {
