@@ -50,7 +50,7 @@ struct ReconstructCommand {
   bool use_remesh = false;
   bool force = false;  // --force: run a rho the sampling cannot support
   remesh::RemeshOptions remesh;  // used with --remesh
-  std::string extract = "sheet";      // --extract: samples, sheet or powershape
+  std::string extract;                // --extract: samples, sheet or powershape; empty: by input
   std::string orientable = "auto";    // --orientable: auto, yes or no
   std::optional<double> cut_handles;  // --cut-handles; unset: by input (choose_input_options)
   InputSettings sampling;
@@ -173,6 +173,7 @@ void write_outliers(const ReconstructCommand& cmd, const LoadedSurface& loaded) 
 void choose_input_options(ReconstructCommand& cmd, const LoadedSurface& loaded) {
   cmd.options = pipeline::options_for_input(loaded.kind, cmd.options);
   if (cmd.extract == "samples") cmd.options.mesh_samples = interpolate::InterpolateOptions{};
+  if (cmd.extract == "sheet") cmd.options.mesh_samples.reset();
   auto& sheet = cmd.options.sheet;
   if (cmd.orientable == "yes") {
     sheet.cut_to_orientable = true;
@@ -451,9 +452,10 @@ void register_reconstruct(CLI::App& app) {
   sub->add_option("--method", cmd->options.method, "envelope (default) or powercrust (direct, for comparison)")
       ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
   sub->add_option("--extract", cmd->extract,
-                  "sheet (default: the medial sheet, a clean 2-manifold finer than the input), samples (the input "
-                  "samples meshed along the sheet, kept in its place when their mesh has the sheet's topology: the "
-                  "input's resolution) or powershape (the paper's raw power shape)")
+                  "samples (default for files: the input samples meshed along the medial sheet, kept in the "
+                  "sheet's place when their mesh has the sheet's topology: the input's resolution), sheet (default "
+                  "for built-in surfaces: the medial sheet itself, a clean 2-manifold finer than the input) or "
+                  "powershape (the paper's raw power shape)")
       ->check(CLI::IsMember({"samples", "sheet", "powershape"}, CLI::ignore_case))
       ->each([cmd](const std::string& value) {
         std::string lower = value;

@@ -175,6 +175,9 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
                            {"candidates_refused", m->stats.candidates_refused},
                            {"holes_filled", m->stats.holes_filled},
                            {"holes_left", m->stats.holes_left},
+                           {"samples_moved", m->stats.samples_moved},
+                           {"samples_left_out", m->stats.samples_left_out},
+                           {"median_offset_rel_spacing", m->stats.median_offset_rel_spacing},
                            {"seconds", m->stats.seconds}};
   }
   if (result.envelope_crust) {
@@ -219,7 +222,9 @@ void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &resu
   if (const auto &m = result.sample_meshing) {
     if (m->is_kept)
       out << "  output: the input samples meshed along the sheet (" << m->samples_topology << "; "
-          << m->stats.holes_filled << " holes closed), " << m->stats.seconds << " s\n";
+          << m->stats.holes_filled << " holes closed, " << m->stats.samples_moved
+          << " samples moved towards the sheet, " << m->stats.samples_left_out << " left out as off it), "
+          << m->stats.seconds << " s\n";
     else
       out << "  output: the sheet (the samples meshed along it have " << m->samples_topology << ", the sheet "
           << m->sheet_topology << ")\n";

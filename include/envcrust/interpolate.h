@@ -30,6 +30,22 @@ struct InterpolateOptions {
   /// Holes longer than this many local spacings are left open (and the result then disagrees with
   /// the sheet's topology): a flat patch over a large gap would not follow the surface.
   double max_filled_hole_rel_spacing = 24.0;
+  /// Samples farther off the sheet than this many local spacings are moved towards it, to
+  /// this distance, before they are meshed: the sheet, built from all the samples, is where a
+  /// noisy surface lies. Noise of half a spacing lies 0.44 spacing off at the median, and
+  /// pulled in to 0.25 the front stops zig-zagging across it.
+  double max_sample_offset_rel_spacing = 0.25;
+  /// ... when the samples lie, at the median, this many local spacings or more off the sheet
+  /// (noise). Closer, they are exact (median 0.003-0.03 on the development set; noise of half a
+  /// spacing reads 0.44): their far ones lie at creases and corners, which the sheet rounds off
+  /// and the samples have right, and none is moved.
+  double min_noise_offset_rel_spacing = 0.1;
+  /// Samples farther off the sheet than this many local spacings (or, when noisy, this many
+  /// times the samples' median offset) are left out of the mesh: the sheet, and with it the
+  /// surface, does not pass by them. Creases leave exact samples up to 0.93 spacing off on the
+  /// development set (fandisk); strays the outlier filter kept lie farther, and pulled in they
+  /// crowd the sheet's border (a cylinder's rim then passes through itself).
+  double max_meshed_offset_rel_spacing = 1.5;
 };
 
 /// What mesh_samples did.
@@ -38,10 +54,14 @@ struct InterpolateStats {
   std::size_t candidates_refused = 0;    ///< candidate triangles the sheet refused
   std::size_t holes_filled = 0;          ///< holes closed off the sheet's border
   std::size_t holes_left = 0;            ///< holes off the sheet's border too long to close
+  std::size_t samples_moved = 0;         ///< samples moved towards the sheet (see max_sample_offset_rel_spacing)
+  std::size_t samples_left_out = 0;      ///< samples too far off the sheet to mesh (max_meshed_offset_rel_spacing)
+  double median_offset_rel_spacing = 0;  ///< median distance of the samples to the sheet, in local spacings
   double seconds = 0.0;
 };
 
-/// The meshed samples: vertices are the used samples (in their input order), faces wound
+/// The meshed samples: vertices are the used samples (in their input order; those far off the
+/// sheet moved towards it, see InterpolateOptions::max_sample_offset_rel_spacing), faces wound
 /// consistently where the piece is orientable. `sample_of[v]` is the index in `samples` of
 /// vertex v.
 struct InterpolateResult {

@@ -107,7 +107,8 @@ inline constexpr double kScanCutHandlesRelRho = 1.5;
 /// sheet, at every seam for an orientable mesh and for a point file (which does not say) only
 /// at seams an orientation-reversing loop shorter than extract::kTwistMinLoopRelRho crosses;
 /// the adaptive retry and the Power Crust fallback are on when rho is automatic, with a mesh's
-/// genus as max_genus. Built-in
+/// genus as max_genus; a file's samples are meshed along the sheet (mesh_samples, the output at
+/// the input's resolution). Built-in
 /// samples keep the method as it is (the experiments measure it) apart from the retry.
 ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions options = {});
 

@@ -18,8 +18,21 @@ class SheetGuide {
   /// sheet and its normal line within acos(min_cosine) of the sheet's there.
   [[nodiscard]] bool allows(const Point3& a, const Point3& b, const Point3& c, double max_distance,
                             double min_cosine) const;
+  /// The nearest point of the sheet to p among the faces round its nearest sheet vertex (the
+  /// sheet is several times denser than the samples, so that is the nearest point but where
+  /// the sheet is coarse); p itself when only degenerate faces are there.
+  [[nodiscard]] Point3 nearest_point(const Point3& p) const;
 
  private:
+  // The nearest point to p of the non-degenerate faces round p's nearest sheet vertex, its
+  // squared distance (infinite if none) and that face's normal.
+  struct Nearest {
+    Point3 point;
+    double squared_distance;
+    Vector3 normal;
+  };
+  [[nodiscard]] Nearest nearest_on_faces(const Point3& p) const;
+
   const TriangleMesh& sheet_;
   std::vector<Index> original_;  // the sheet's index of each of used_
   std::vector<Point3> used_;     // the vertices some face uses
@@ -49,6 +62,14 @@ std::vector<std::array<Index, 3>> guided_front(const std::vector<Point3>& sample
 /// CGAL's hole triangulation over their own vertices; counts into `stats`.
 void close_holes_off_border(TriangleMesh& mesh, const std::vector<double>& spacing, const TriangleMesh& sheet,
                             const InterpolateOptions& options, InterpolateStats& stats);
+
+/// The samples as the front meshes them: noisy ones (see min_noise_offset_rel_spacing) moved
+/// towards the sheet to max_sample_offset_rel_spacing times their local spacing from it, and
+/// those farther off than max_meshed_offset_rel_spacing (or, when noisy, as many times their
+/// median offset) left out: `is_meshed[i]` says which. Counts into `stats`.
+std::vector<Point3> pull_towards_sheet(const std::vector<Point3>& samples, const std::vector<double>& spacing,
+                                       const SheetGuide& guide, const InterpolateOptions& options,
+                                       std::vector<char>& is_meshed, InterpolateStats& stats);
 
 /// Each sample's mean distance to its 6 nearest others.
 std::vector<double> local_spacing(const std::vector<Point3>& samples);

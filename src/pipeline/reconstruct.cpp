@@ -3,6 +3,7 @@
 
 #include "envcrust/distance.h"
 #include "envcrust/errors.h"
+#include "envcrust/mesh.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
 #include "envcrust/union_find.h"
@@ -43,6 +44,9 @@ void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples&
   if (out.mesh.triangles.empty()) return;
   progress.report("mesh samples", 0.0);
   interpolate::InterpolateResult meshed = interpolate::mesh_samples(samples.points, out.mesh, options);
+  // A closed surface faces outward, as the Power Crust's does (the envelope's sheet is turned
+  // along the samples' normals after this step).
+  if (out.method == Method::PowerCrust) topology::orient_faces(meshed.mesh);
   SampleMeshing report;
   report.stats = meshed.stats;
   if (!out.topology) out.topology = topology::analyze_topology(out.mesh);
@@ -51,6 +55,15 @@ void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples&
   report.samples_topology = topology_summary(mine);
   report.is_kept = !meshed.mesh.triangles.empty() && mine.is_manifold() && mine.duplicate_faces == 0 &&
                    mine.misoriented_edges == 0 && report.samples_topology == report.sheet_topology;
+  // Nor may the samples' mesh pass through itself where the sheet does not (a rim's corner
+  // folded over by the front, a hole closed across a fold).
+  if (report.is_kept) {
+    const std::size_t crossings = mesh::self_intersections(meshed.mesh, 0).face_pairs;
+    if (crossings > 0 && crossings > mesh::self_intersections(out.mesh, 0).face_pairs) {
+      report.is_kept = false;
+      report.samples_topology += ", passes through itself (" + std::to_string(crossings) + " pairs of faces)";
+    }
+  }
   if (report.is_kept) {
     out.mesh = std::move(meshed.mesh);
     out.topology = std::move(mine);
@@ -88,6 +101,9 @@ ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions 
     options.sheet.orientable_max_twist_loop_rel_rho =
         is_point_file ? extract::kTwistMinLoopRelRho : std::numeric_limits<double>::infinity();
   }
+  // A file's samples are the output's vertices (docs/method.md §8.8); a built-in surface's
+  // sampling is the caller's choice, and its sheet is the surface to within its exact offsets.
+  if (!input.is_builtin) options.mesh_samples = interpolate::InterpolateOptions{};
   options.use_adaptive_retry = !options.envelope.rho.has_value();
   options.use_power_crust_fallback = options.use_adaptive_retry;
   options.are_curves_detected = input.is_boundary_detected;
@@ -375,7 +391,9 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
         samples.boundary.size() < kept->count(options.max_genus))
       power_crust_fallback(out, *kept, samples, options, groups, progress);
   }
-  if (options.mesh_samples && !options.remesh && is_sheet_run && out.method == Method::Envelope)
+  // The Power Crust's surface, where it replaced the sheet, guides the samples' mesh as well:
+  // it too lies on the samples, ten times as finely.
+  if (options.mesh_samples && !options.remesh && is_sheet_run)
     mesh_samples_result(out, samples, *options.mesh_samples, progress);
   remesh_result(out, options.remesh, progress);
   if (options.use_normal_orientation && out.method == Method::Envelope && is_sheet_run)

@@ -46,12 +46,12 @@ TEST(SampleMeshing, moebius_strip_keeps_its_non_orientable_sheet) {
   EXPECT_GT(result.mesh.vertices.size(), samples.points.size());  // the sheet's own vertices
 }
 
-TEST(SampleMeshing, is_asked_for_and_gives_way_to_remeshing) {
+TEST(SampleMeshing, is_the_default_for_files_and_gives_way_to_remeshing) {
   pipeline::InputKind scan;
   scan.is_builtin = false;
   scan.are_normals_estimated = true;
-  EXPECT_FALSE(pipeline::options_for_input(scan).mesh_samples.has_value());
-  EXPECT_FALSE(pipeline::options_for_input({}).mesh_samples.has_value());
+  EXPECT_TRUE(pipeline::options_for_input(scan).mesh_samples.has_value());  // a file: its own samples
+  EXPECT_FALSE(pipeline::options_for_input({}).mesh_samples.has_value());   // a built-in: its sheet
   auto options = with_sample_meshing();
   options.remesh = remesh::RemeshOptions{};
   const auto result = pipeline::reconstruct(fixtures::builtin_samples("hemisphere", 2000), options);
