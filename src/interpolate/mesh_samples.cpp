@@ -117,7 +117,7 @@ InterpolateResult mesh_samples(const std::vector<Point3>& samples, const Triangl
   out.mesh.triangles.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
     // Each triangle from its smallest vertex on (its winding kept), the list sorted: the front's
-    // order depends on the thread schedule, and the same surface is then written the same.
+    // order depends on the thread schedule, and the same surface is then returned the same.
     std::array<Index, 3> f{vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]};
     std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
     out.mesh.triangles.push_back(f);

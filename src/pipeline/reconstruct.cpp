@@ -38,15 +38,24 @@ std::string topology_summary(const topology::MeshTopology& t) {
          (t.is_orientable ? "orientable" : "non-orientable") + (t.is_manifold() ? "" : ", not a manifold");
 }
 
+// Each face from its smallest vertex on (its winding kept), the faces sorted: the orientation
+// steps flip faces in an order that may follow the heap's layout, and one input then gives one
+// file, whatever the process's environment.
+void write_in_canonical_order(TriangleMesh& mesh) {
+  for (auto& t : mesh.triangles) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(mesh.triangles.begin(), mesh.triangles.end());
+}
+
 // The samples meshed along the sheet, in place of the sheet when the topologies agree.
 void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples& samples,
                          const interpolate::InterpolateOptions& options, const Progress& progress) {
   if (out.mesh.triangles.empty()) return;
   progress.report("mesh samples", 0.0);
   interpolate::InterpolateResult meshed = interpolate::mesh_samples(samples.points, out.mesh, options);
-  // A closed surface faces outward, as the Power Crust's does (the envelope's sheet is turned
-  // along the samples' normals after this step).
-  if (out.method == Method::PowerCrust) topology::orient_faces(meshed.mesh);
+  // The front's winding depends on where it started: turned by the rule the sheet follows (a
+  // closed piece outward, an open one out of the volume its capped borders close), and then,
+  // with the samples' normals signed, along them as the sheet would be.
+  topology::orient_faces(meshed.mesh);
   SampleMeshing report;
   report.stats = meshed.stats;
   if (!out.topology) out.topology = topology::analyze_topology(out.mesh);
@@ -398,6 +407,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   remesh_result(out, options.remesh, progress);
   if (options.use_normal_orientation && out.method == Method::Envelope && is_sheet_run)
     topology::orient_along_normals(out.mesh, samples.points, samples.normals);
+  if (out.sample_meshing && out.sample_meshing->is_kept) write_in_canonical_order(out.mesh);
   return out;
 }
 
