@@ -5,7 +5,6 @@
 #include "envcrust/neighbour_table.h"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -115,14 +114,7 @@ InterpolateResult mesh_samples(const std::vector<Point3>& samples, const Triangl
     out.sample_of.push_back(i);
   }
   out.mesh.triangles.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
-    // Each triangle from its smallest vertex on (its winding kept), the list sorted: the front's
-    // order depends on the thread schedule, and the same surface is then returned the same.
-    std::array<Index, 3> f{vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]};
-    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    out.mesh.triangles.push_back(f);
-  }
-  std::sort(out.mesh.triangles.begin(), out.mesh.triangles.end());
+  for (const auto& t : mesh.triangles) out.mesh.triangles.push_back({vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]]});
   out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
