@@ -18,6 +18,7 @@
 #include <tbb/global_control.h>
 
 #include <atomic>
+#include <cmath>
 #include <iomanip>
 #include <memory>
 #include <sstream>
@@ -30,6 +31,42 @@ namespace {
 struct Reconstruction {
   py::object vertices, faces, normals, colors, report;
 };
+
+// One class number per point, as a float scalar named "classification" (what the library's
+// classes choose from, and what read_points gives for a LAS file): whole numbers of any integer
+// dtype, or floats with whole values such as read_points' float32 column.
+std::vector<float> to_classification(const py::handle& object, std::size_t count) {
+  py::array any;
+  try {
+    any = py::array::ensure(object);
+  } catch (const py::error_already_set&) {
+  }
+  if (!any) throw py::value_error("classification must be an array of shape (n,)");
+  if (any.ndim() != 1) {
+    std::ostringstream shape;
+    for (py::ssize_t d = 0; d < any.ndim(); ++d) shape << (d ? ", " : "") << any.shape(d);
+    throw py::value_error("classification must be an array of shape (n,), got shape (" + shape.str() + ")");
+  }
+  const char kind = any.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::value_error("classification must hold whole numbers, got dtype " + py::str(any.dtype()).cast<std::string>());
+  if (static_cast<std::size_t>(any.shape(0)) != count)
+    throw py::value_error("classification must have " + std::to_string(count) + " values (one per point), got " +
+                          std::to_string(any.shape(0)));
+  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(any);
+  const auto r = values.unchecked<1>();
+  std::vector<float> classes(count);
+  for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+    // Beyond 2^24 a float no longer holds every whole number, and two classes could merge.
+    if (r(i) != std::floor(r(i)) || std::abs(r(i)) > 16777216.0) {
+      std::ostringstream text;
+      text << "classification: row " << i << " has " << r(i) << ", not a whole number within +-2^24";
+      throw py::value_error(text.str());
+    }
+    classes[i] = static_cast<float>(r(i));
+  }
+  return classes;
+}
 
 // Runs a stage on the points, naming them at the head of what it refuses, as the CLI names
 // its input file (cli::naming_input).
@@ -174,7 +211,7 @@ Run run(input::PointInput points, const ReconstructSettings& settings, const Pro
 }
 
 Reconstruction reconstruct(const py::handle& points, const py::handle& normals, const py::handle& colors,
-                           const py::kwargs& keywords) {
+                           const py::handle& classification, const py::kwargs& keywords) {
   const ReconstructSettings settings = parse_reconstruct_keywords(keywords);
   input::PointInput input;
   input.points.points.points = to_points(points, "points");
@@ -186,6 +223,10 @@ Reconstruction reconstruct(const py::handle& points, const py::handle& normals, 
                             std::to_string(input.points.points.normals.size()));
   }
   if (!colors.is_none()) input.points.attributes.colours = to_colours(colors, count);
+  if (!classification.is_none()) {
+    input.points.attributes.names.push_back("classification");
+    input.points.attributes.scalars.push_back(to_classification(classification, count));
+  }
   std::atomic<bool> cancel = false;
   const Progress progress = run_progress(settings.progress, cancel);
   Run done;
@@ -232,11 +273,13 @@ void register_reconstruct(py::module_& module) {
                     "checks, warnings, ...)")
       .def("__repr__", &describe);
   module.def("reconstruct", &reconstruct, py::arg("points"), py::arg("normals") = py::none(),
-             py::arg("colors") = py::none(),
+             py::arg("colors") = py::none(), py::arg("classification") = py::none(),
              (std::string("Reconstruct a surface (with boundary) from points sampled on it, as `envcrust reconstruct` "
                           "does from a point file.\n\n"
                           "points: n x 3 array; normals: n x 3 (any sign, optional: estimated when None); colors: n x 3, "
-                          "0..255 integers or 0..1 floats (optional; carried to the nearest output vertices).\n"
+                          "0..255 integers or 0..1 floats (optional; carried to the nearest output vertices); "
+                          "classification: n class numbers (optional; classes= keeps some of them, as --classes "
+                          "does with a LAS file's).\n"
                           "Returns a Reconstruction. Raises envcrust.Error subclasses with the CLI's messages "
                           "(InvalidInput and InvalidOptions are ValueErrors), ValueError for arrays of the wrong shape, "
                           "TypeError for an unknown option, KeyboardInterrupt on Ctrl-C (checked between the steps).\n") +

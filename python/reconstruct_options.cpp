@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <vector>
 
 namespace envcrust::python {
 namespace py = pybind11;
@@ -29,6 +30,34 @@ std::string one_of(const py::handle& value, const char* name, std::initializer_l
     listed += (listed.empty() ? "'" : ", '") + std::string(c) + "'";
   }
   throw py::value_error(std::string(name) + " must be one of " + listed + " (got " + shown(value) + ")");
+}
+
+// A class number as the CLI's --classes takes it: a whole number in 0..255 (LAS classes are a
+// byte); numpy's integers count, bools and floats do not.
+bool is_class_number(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr())) return false;
+  const long long n = py::int_(py::reinterpret_borrow<py::object>(value)).cast<long long>();
+  return n >= 0 && n <= 255;
+}
+
+// None: every point; one class number or a sequence of them (list, tuple, numpy array).
+std::vector<int> class_list(const py::handle& value) {
+  if (value.is_none()) return {};
+  const auto refused = [&] {
+    return py::value_error("classes must be a class number or a list of them, whole numbers in 0..255; None keeps "
+                           "every point (got " + shown(value) + ")");
+  };
+  if (is_class_number(value)) return {py::int_(py::reinterpret_borrow<py::object>(value)).cast<int>()};
+  if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) || !py::isinstance<py::iterable>(value))
+    throw refused();
+  std::vector<int> classes;
+  for (const py::handle item : value) {
+    if (!is_class_number(item)) throw refused();
+    classes.push_back(py::int_(py::reinterpret_borrow<py::object>(item)).cast<int>());
+  }
+  // The library reads an empty list as every point; asked for no class, a user means none.
+  if (classes.empty()) throw refused();
+  return classes;
 }
 
 using Setter = std::function<void(ReconstructSettings&, const py::handle&)>;
@@ -98,6 +127,7 @@ const std::map<std::string, Setter>& setters() {
        [](ReconstructSettings& s, const py::handle& v) {
          s.input.boundary.min_loop_width = positive(v, "boundary_min_width", true);
        }},
+      {"classes", [](ReconstructSettings& s, const py::handle& v) { s.input.classes = class_list(v); }},
       {"creases",
        [](ReconstructSettings& s, const py::handle& v) {
          s.input.creases = one_of(v, "creases", {"round", "join"}) == "join" ? input::CreaseMode::Join
@@ -135,6 +165,8 @@ Options (keywords; the defaults are those of `envcrust reconstruct`):
   keep_outliers=False       keep the stray samples that are otherwise removed
   detect_boundary=True      False: the surface is closed (--no-boundary)
   boundary_min_width=0      drop detected loops narrower than this many sample spacings
+  classes=None              keep only the points of these classes, e.g. [2, 6] (needs classification=);
+                            None: every point
   creases='round'           or 'join': sharp creases of points with normals
   force=False               run a given rho the sampling cannot support
   analysis=True             False: no analysis and no checks in the report
