@@ -66,7 +66,7 @@ void write_mesh(const std::filesystem::path& path, const py::handle& vertices, c
 
 void register_io(py::module_& module) {
   module.def("read_points", &read_points, py::arg("path"),
-             "Read a point file (.xyz .pts .txt .csv .ply, or a mesh file's vertices) as `envcrust reconstruct` "
+             "Read a point file (.xyz .pts .txt .csv .ply .las, or a mesh file's vertices) as `envcrust reconstruct` "
              "reads it.\nReturns a dict: points (n x 3 float64), normals (n x 3 or None), colors (n x 3 uint8 or "
              "None), scalars (name -> n float32, e.g. intensity).\nRaises envcrust.IoError naming the file and the "
              "problem (\"scan.xyz:12: expected at least 3 numbers ..., got 2\").");

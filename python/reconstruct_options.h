@@ -29,7 +29,7 @@ struct ReconstructSettings {
   pybind11::object progress = pybind11::none();  ///< callable(stage: str, fraction: float) or None
 };
 
-/// The keywords reconstruct() takes besides points, normals and colors, one line each (its docstring).
+/// The keywords reconstruct() takes besides points, normals, colors and classification, one line each (its docstring).
 extern const char* const kReconstructKeywordsDoc;
 
 /// Settings from reconstruct()'s keyword arguments.

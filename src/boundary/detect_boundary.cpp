@@ -376,6 +376,15 @@ BoundaryDetection detect_checked(const std::vector<Point3>& points, const std::v
                                      options.link_min_conormal_dot);
   }
   auto components = detail::link_candidates(points, candidates, reach, options.link_min_conormal_dot);
+  std::size_t thick_points = 0;
+  if (const std::size_t thick = detail::drop_thick_groups(points, table, neighbors, components, thick_points);
+      thick > 0) {
+    out.dropped_loops += thick;
+    out.warnings.push_back(std::to_string(thick) + " group" + (thick == 1 ? "" : "s") + " of " +
+                           std::to_string(thick_points) +
+                           " boundary candidates dropped: their neighbourhoods are no sheet (a tube, tip or "
+                           "crumpled part thinner than the sampling resolves)");
+  }
   std::vector<detail::Centreline> lines;
   // Each band is ordered along the diameter path of its linking tree; when that path's ends
   // stay apart (a small or ragged loop whose tree branches), along the NN-crust cycle of its

@@ -399,8 +399,20 @@ std::size_t drop_pieces_away_from_boundary(TaggedMesh& t, const std::vector<Poin
   for (const auto& loop : topology::boundary_loops(t.mesh))
     status[component_of_vertex[loop.vertices.front()]] |=
         runs_along_boundary(t.mesh, loop.vertices, nearest, max_distance) ? 3 : 1;
+  // A piece is cut off only when the sheet that follows the curves is larger: a detected curve
+  // may be false (a flagged crumple or thin tube on a closed shape), and then the whole sheet
+  // away from it, which every sample supports, would go (the femur's 30k samples: 99.9% of the
+  // sheet dropped, a piece of 0.1% around the false curve kept).
+  std::vector<double> area(t.mesh.triangles.size(), 0.0);
+  for (std::uint32_t f = 0; f < t.mesh.triangles.size(); ++f) area[root[f]] += face_area(t.mesh, t.mesh.triangles[f]);
+  double along = 0.0;
+  for (std::size_t r = 0; r < status.size(); ++r)
+    if (status[r] == 3) along = std::max(along, area[r]);
   std::size_t dropped = 0;
-  for (char s : status) dropped += s == 1;
+  for (std::size_t r = 0; r < status.size(); ++r) {
+    if (status[r] == 1 && !(area[r] < along)) status[r] = 0;
+    dropped += status[r] == 1;
+  }
   if (dropped == 0) return 0;
   std::vector<char> remove(t.mesh.triangles.size(), 0);
   for (std::uint32_t f = 0; f < remove.size(); ++f) remove[f] = status[root[f]] == 1;

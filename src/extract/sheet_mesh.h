@@ -101,8 +101,10 @@ std::size_t fill_loops_away_from_boundary(TaggedMesh& tagged, const std::vector<
 
 /// Remove the components that have border loops but none that runs along a boundary curve
 /// (the rule of fill_loops_away_from_boundary): pieces a cut has separated from the rest,
-/// which closing their holes would turn into closed shells. Nothing when `boundary_points` is
-/// empty (a closed surface, where every hole is a cut's). Returns the number removed.
+/// which closing their holes would turn into closed shells; only those smaller than the
+/// largest piece that does run along a curve (a false curve must not take the sheet with it).
+/// Nothing when `boundary_points` is empty (a closed surface, where every hole is a cut's).
+/// Returns the number removed.
 std::size_t drop_pieces_away_from_boundary(TaggedMesh& tagged, const std::vector<Point3>& boundary_points,
                                            double max_distance);
 
