@@ -167,6 +167,12 @@ RunChecks check_run(const input::PreparedInput& prepared, const pipeline::Recons
   const bool fallback_closed = prepared.kind.is_boundary_detected && result.power_crust_fallback &&
                                result.power_crust_fallback->kept_power_crust;
   checks.failed = failed_checks(*checks.analysis, *checks.boundary_check, fallback_closed);
+  // As the CLI: said, not failed.
+  checks.uncovered_patches = pipeline::uncovered_patches(result.mesh, prepared.samples.points, result.envelope.rho);
+  if (checks.uncovered_patches > 0)
+    checks.warnings.push_back("the result leaves out " + std::to_string(checks.uncovered_patches) +
+                              (checks.uncovered_patches == 1 ? " patch" : " patches") +
+                              " of the input's samples (8 or more samples farther than 2 rho from it)");
   return checks;
 }
 

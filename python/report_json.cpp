@@ -119,7 +119,9 @@ nlohmann::json reconstruct_json(const input::PreparedInput& prepared, const pipe
   }
   if (checks.boundary_check && checks.analysis)
     j["boundary_check"] = cli::boundary_check_json(*checks.boundary_check, checks.curves, checks.analysis->topology);
-  if (checks.analysis) j["checks"] = {{"passed", checks.failed.empty()}, {"failed", checks.failed}};
+  if (checks.analysis)
+    j["checks"] = {
+        {"passed", checks.failed.empty()}, {"failed", checks.failed}, {"uncovered_patches", checks.uncovered_patches}};
   j["warnings"] = checks.warnings;
   return j;
 }

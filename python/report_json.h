@@ -27,6 +27,7 @@ struct RunChecks {
   std::optional<analysis::BoundaryCheck> boundary_check;
   std::vector<Polyline> curves;     ///< the input's boundary curves the check compared with
   std::vector<std::string> failed;  ///< one line per failed check, as the CLI's "checks"
+  std::size_t uncovered_patches = 0;  ///< patches of input samples the result leaves out (pipeline::uncovered_patches)
   std::vector<std::string> warnings;
 };
 

@@ -28,7 +28,7 @@ def test_moebius_strip_is_non_orientable_with_one_boundary_loop(moebius):
     assert analysis["boundary_loops"] == 1
     assert analysis["euler_characteristic"] == 0
     assert analysis["is_manifold"] is True
-    assert moebius.report["checks"] == {"passed": True, "failed": []}
+    assert moebius.report["checks"] == {"passed": True, "failed": [], "uncovered_patches": 0}
     assert moebius.vertices.shape == (analysis["vertices"], 3)
     assert moebius.vertices.dtype == np.float64
     assert moebius.faces.shape == (analysis["faces"], 3)

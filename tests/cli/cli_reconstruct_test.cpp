@@ -290,3 +290,28 @@ TEST_F(CliTest, reconstruct_warns_when_rho_exceeds_the_reach) {
   ASSERT_FALSE(warnings.empty());
   EXPECT_EQ(warnings[0].get<std::string>().rfind("rho 1.5 may be too large:", 0), 0u);
 }
+
+// A small dense patch far from the rest (25 samples on a 5 x 5 grid, 3 radii away from a
+// 2,000-sample hemisphere) is too small to be kept as a piece of the sheet: the result then
+// leaves input samples out, and the report says so.
+TEST_F(CliTest, a_result_that_leaves_a_patch_of_samples_out_says_so) {
+  ASSERT_EQ(run_envcrust("sample hemisphere -n 2000 -o " + path("h.xyz") + " --quiet").exit_code, 0);
+  {
+    std::ofstream out(path("h.xyz"), std::ios::app);
+    for (int i = 0; i < 5; ++i)
+      for (int k = 0; k < 5; ++k) out << 3.0 + 0.02 * i << ' ' << 0.02 * k << " 0\n";
+  }
+  const auto j = run_envcrust_json("reconstruct " + path("h.xyz") + " -o " + path("h.ply") + " --json");
+  EXPECT_EQ(j["checks"]["uncovered_patches"], 1);
+  EXPECT_EQ(j["analysis"]["components"], 1);
+  const std::string said =
+      "the result leaves out 1 patch of the input's samples (8 or more samples farther than 2 rho from it)";
+  EXPECT_NE(std::find(j["warnings"].begin(), j["warnings"].end(), said), j["warnings"].end()) << j["warnings"];
+  // Without the patch the same hemisphere leaves nothing out.
+  ASSERT_EQ(run_envcrust("sample hemisphere -n 2000 -o " + path("g.xyz") + " --quiet").exit_code, 0);
+  const auto g = run_envcrust_json("reconstruct " + path("g.xyz") + " -o " + path("g.ply") + " --json");
+  EXPECT_EQ(g["checks"]["uncovered_patches"], 0);
+  EXPECT_EQ(std::count_if(g["warnings"].begin(), g["warnings"].end(),
+                          [](const auto& w) { return w.template get<std::string>().find("leaves out") != std::string::npos; }),
+            0);
+}
