@@ -4,6 +4,7 @@
 
 #include "arrays.h"
 #include "reconstruct_options.h"
+#include "boundary_check_output.h"
 #include "report_json.h"
 #include "rho_support.h"
 #include "run_progress.h"
@@ -169,10 +170,7 @@ RunChecks check_run(const input::PreparedInput& prepared, const pipeline::Recons
   checks.failed = failed_checks(*checks.analysis, *checks.boundary_check, fallback_closed);
   // As the CLI: said, not failed.
   checks.uncovered_patches = pipeline::uncovered_patches(result.mesh, prepared.samples.points, result.envelope.rho);
-  if (checks.uncovered_patches > 0)
-    checks.warnings.push_back("the result leaves out " + std::to_string(checks.uncovered_patches) +
-                              (checks.uncovered_patches == 1 ? " patch" : " patches") +
-                              " of the input's samples (8 or more samples farther than 2 rho from it)");
+  if (checks.uncovered_patches > 0) checks.warnings.push_back(cli::uncovered_patches_warning(checks.uncovered_patches));
   return checks;
 }
 

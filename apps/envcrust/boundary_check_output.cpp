@@ -78,4 +78,9 @@ nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const s
           {"is_consistent", check.is_consistent()}};
 }
 
+std::string uncovered_patches_warning(std::size_t patches) {
+  return "the result leaves out " + std::to_string(patches) + (patches == 1 ? " patch" : " patches") +
+         " of the input's samples (8 or more samples farther than 2 rho from it)";
+}
+
 }  // namespace envcrust::cli

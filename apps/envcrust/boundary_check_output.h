@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,9 @@ std::vector<std::string> boundary_check_warnings(const analysis::BoundaryCheck& 
 
 nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const std::vector<Polyline>& curves,
                                    const topology::MeshTopology& topology);
+
+/// The warning for a result that leaves `patches` (> 0) patches of the input's samples out
+/// (pipeline::uncovered_patches), worded once for the CLI's report and Python's.
+std::string uncovered_patches_warning(std::size_t patches);
 
 }  // namespace envcrust::cli

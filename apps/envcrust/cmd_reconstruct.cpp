@@ -347,12 +347,9 @@ void run_reconstruct(ReconstructCommand& cmd) {
     failed = failed_checks(*report, check, fallback_closed);
     // A result that follows its curves can still leave parts of the input out (a piece kept
     // around a false curve, a part a repair cut away). Said, not failed: the repairs leave
-    // such patches on real scans (the lion head's points: 5), which are still the best result.
+    // such patches on real scans (the lion head's points: 5) in results that otherwise pass.
     const std::size_t uncovered = pipeline::uncovered_patches(result.mesh, loaded.samples.points, result.envelope.rho);
-    if (uncovered > 0)
-      warnings.push_back("the result leaves out " + std::to_string(uncovered) +
-                         (uncovered == 1 ? " patch" : " patches") +
-                         " of the input's samples (8 or more samples farther than 2 rho from it)");
+    if (uncovered > 0) warnings.push_back(uncovered_patches_warning(uncovered));
     j["checks"] = {{"passed", failed.empty()}, {"failed", failed}, {"uncovered_patches", uncovered}};
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));
