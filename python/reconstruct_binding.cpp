@@ -128,27 +128,6 @@ std::string empty_result_reason(const pipeline::ReconstructOptions& options, con
   return reason.str();
 }
 
-// The result's own checks, worded as the CLI's report words them (its "checks": failed).
-std::vector<std::string> failed_checks(const analysis::AnalysisReport& report, const analysis::BoundaryCheck& check,
-                                       bool are_closed_curves_accepted) {
-  std::vector<std::string> failed;
-  const auto& t = report.topology;
-  if (!t.is_manifold())
-    failed.push_back("not a 2-manifold (" + std::to_string(t.non_manifold_edges) + " non-manifold edges, " +
-                     std::to_string(t.non_manifold_vertices) + " non-manifold vertices)");
-  if (report.self_intersections && report.self_intersections->face_pairs > 0)
-    failed.push_back("passes through itself (" + std::to_string(report.self_intersections->face_pairs) +
-                     " pairs of faces)");
-  if (!check.missing_curves.empty() && !are_closed_curves_accepted)
-    failed.push_back(std::to_string(check.missing_curves.size()) + " of the input's " +
-                     std::to_string(check.matches.size()) + " boundary curves followed by no border");
-  if (!check.extra_loops.empty())
-    failed.push_back(std::to_string(check.extra_loops.size()) +
-                     (check.extra_loops.size() == 1 ? " border that follows" : " borders that follow") +
-                     " no boundary curve of the input (a hole it has not)");
-  return failed;
-}
-
 // The analysis of the result against the input points, and its checks (the CLI's, for a
 // point file without --reference).
 RunChecks check_run(const input::PreparedInput& prepared, const pipeline::ReconstructResult& result) {
@@ -160,16 +139,12 @@ RunChecks check_run(const input::PreparedInput& prepared, const pipeline::Recons
   checks.analysis = result.topology ? analysis::analyze_mesh(result.mesh, *result.topology, reference)
                                     : analysis::analyze_mesh(result.mesh, reference);
   for (const auto& c : prepared.samples.boundary) checks.curves.push_back(c.polyline());
-  const bool is_envelope = result.method == pipeline::Method::Envelope;
-  checks.boundary_check =
-      is_envelope ? pipeline::check_result_boundary(checks.analysis->topology, prepared.samples, result.envelope)
-                  : analysis::check_boundary(checks.analysis->topology, checks.curves,
-                                             0.01 * mesh::bbox_diagonal(prepared.samples.points));
-  const bool fallback_closed = prepared.kind.is_boundary_detected && result.power_crust_fallback &&
-                               result.power_crust_fallback->kept_power_crust;
-  checks.failed = failed_checks(*checks.analysis, *checks.boundary_check, fallback_closed);
+  pipeline::ResultChecks own =
+      pipeline::check_result(*checks.analysis, prepared.samples, result, prepared.kind.is_boundary_detected);
+  checks.boundary_check = std::move(own.boundary);
+  checks.failed = std::move(own.failed);
   // As the CLI: said, not failed.
-  checks.uncovered_patches = pipeline::uncovered_patches(result.mesh, prepared.samples.points, result.envelope.rho);
+  checks.uncovered_patches = own.uncovered_patches;
   if (checks.uncovered_patches > 0) checks.warnings.push_back(cli::uncovered_patches_warning(checks.uncovered_patches));
   return checks;
 }

@@ -236,30 +236,6 @@ void check_outputs(const ReconstructCommand& cmd, io::OutputKind output_kind) {
   check_outputs_are_not_inputs(inputs, outputs);
 }
 
-// The result's own checks, from what the analysis computed: a 2-manifold, not passing through
-// itself, its borders along the input's boundary curves and no others. One line per failure.
-// Curves closed on purpose are no failure: detected curves (maybe false ones) that the Power
-// Crust fallback, which counts each one it closes as a defect, still chose to close.
-std::vector<std::string> failed_checks(const analysis::AnalysisReport& report, const analysis::BoundaryCheck& check,
-                                       bool are_closed_curves_accepted) {
-  std::vector<std::string> failed;
-  const auto& t = report.topology;
-  if (!t.is_manifold())
-    failed.push_back("not a 2-manifold (" + std::to_string(t.non_manifold_edges) + " non-manifold edges, " +
-                     std::to_string(t.non_manifold_vertices) + " non-manifold vertices)");
-  if (report.self_intersections && report.self_intersections->face_pairs > 0)
-    failed.push_back("passes through itself (" + std::to_string(report.self_intersections->face_pairs) +
-                     " pairs of faces)");
-  if (!check.missing_curves.empty() && !are_closed_curves_accepted)
-    failed.push_back(std::to_string(check.missing_curves.size()) + " of the input's " +
-                     std::to_string(check.matches.size()) + " boundary curves followed by no border");
-  if (!check.extra_loops.empty())
-    failed.push_back(std::to_string(check.extra_loops.size()) +
-                     (check.extra_loops.size() == 1 ? " border that follows" : " borders that follow") +
-                     " no boundary curve of the input (a hole it has not)");
-  return failed;
-}
-
 // After the outputs are written and the report printed: a result that fails its checks ends
 // the run with kExitChecksFailed.
 void throw_if_failed(const ReconstructCommand& cmd, const std::vector<std::string>& failed) {
@@ -334,23 +310,17 @@ void run_reconstruct(ReconstructCommand& cmd) {
     std::vector<Polyline> curves;
     for (const auto& c : loaded.samples.boundary) curves.push_back(c.polyline());
     const bool is_envelope = result.method == pipeline::Method::Envelope;
-    const auto check =
-        is_envelope ? pipeline::check_result_boundary(report->topology, loaded.samples, result.envelope)
-                    : analysis::check_boundary(report->topology, curves, 0.01 * mesh::bbox_diagonal(loaded.samples.points));
+    const pipeline::ResultChecks checks =
+        pipeline::check_result(*report, loaded.samples, result, loaded.kind.is_boundary_detected);
+    const analysis::BoundaryCheck& check = checks.boundary;
     std::ostringstream tolerance_text;
     tolerance_text.precision(4);
     tolerance_text << (is_envelope ? "2 rho = " : "1% of the diagonal = ") << check.tolerance;
     j["boundary_check"] = boundary_check_json(check, curves, report->topology);
     unresolved_curves = check.unresolved_curves;
-    const bool fallback_closed = loaded.kind.is_boundary_detected && result.power_crust_fallback &&
-                                 result.power_crust_fallback->kept_power_crust;
-    failed = failed_checks(*report, check, fallback_closed);
-    // A result that follows its curves can still leave parts of the input out (a piece kept
-    // around a false curve, a part a repair cut away). Said, not failed: the repairs leave
-    // such patches on real scans (the lion head's points: 5) in results that otherwise pass.
-    const std::size_t uncovered = pipeline::uncovered_patches(result.mesh, loaded.samples.points, result.envelope.rho);
-    if (uncovered > 0) warnings.push_back(uncovered_patches_warning(uncovered));
-    j["checks"] = {{"passed", failed.empty()}, {"failed", failed}, {"uncovered_patches", uncovered}};
+    failed = checks.failed;
+    if (checks.uncovered_patches > 0) warnings.push_back(uncovered_patches_warning(checks.uncovered_patches));
+    j["checks"] = {{"passed", failed.empty()}, {"failed", failed}, {"uncovered_patches", checks.uncovered_patches}};
     for (auto& w : boundary_check_warnings(check, curves, report->topology, tolerance_text.str()))
       warnings.push_back(std::move(w));
   }

@@ -60,10 +60,12 @@ struct InterpolateStats {
   double seconds = 0.0;
 };
 
-/// The meshed samples: vertices are the used samples (in their input order; those far off the
-/// sheet moved towards it, see InterpolateOptions::max_sample_offset_rel_spacing), faces wound
-/// consistently where the piece is orientable. `sample_of[v]` is the index in `samples` of
-/// vertex v.
+/// The meshed samples: vertices are the used samples (in their input order; noisy ones moved
+/// towards the sheet, see InterpolateOptions::max_sample_offset_rel_spacing), faces wound
+/// consistently where the piece is orientable. Samples farther off the sheet than
+/// InterpolateOptions::max_meshed_offset_rel_spacing, and those no face reached, are not
+/// vertices (InterpolateStats::samples_left_out counts the first). `sample_of[v]` is the
+/// index in `samples` of vertex v.
 struct InterpolateResult {
   TriangleMesh mesh;
   std::vector<std::size_t> sample_of;

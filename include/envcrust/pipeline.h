@@ -214,6 +214,25 @@ analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& resu
                                               const envelope::SurfaceSamples& samples,
                                               const envelope::EnvelopeSamples& envelope);
 
+/// A result's own checks, as the CLI's and Python's reports give them ("checks").
+struct ResultChecks {
+  /// The result's borders against the input's curves: check_result_boundary for an envelope
+  /// result, within 1% of the samples' diagonal for a Power Crust one.
+  analysis::BoundaryCheck boundary;
+  /// One line per failed check: not a 2-manifold, passing through itself, an input curve
+  /// followed by no border, a border along no curve. Empty: passed.
+  std::vector<std::string> failed;
+  /// uncovered_patches of the result: said, not failed (repairs leave such patches on real
+  /// scans, e.g. 5 on the lion head's points, in results that otherwise pass).
+  std::size_t uncovered_patches = 0;
+};
+
+/// The checks of `result` from its analysis (`report`, with self-intersections when they were
+/// computed). Detected curves (maybe false ones) that the Power Crust fallback chose to close
+/// are no failure: the fallback counted each one it closed as a defect and still kept it.
+ResultChecks check_result(const analysis::AnalysisReport& report, const envelope::SurfaceSamples& samples,
+                          const ReconstructResult& result, bool are_curves_detected);
+
 /// Sets of samples joined by chains of neighbours (each one with its 8 nearest) no farther
 /// apart than `reach`: at least as many as the pieces of the union of the balls of radius
 /// reach / 2 around them, so an envelope of radius rho around them has at least as many

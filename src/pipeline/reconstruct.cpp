@@ -257,6 +257,38 @@ analysis::BoundaryCheck check_result_boundary(const topology::MeshTopology& resu
   return analysis::check_boundary(result, curves, 2.0 * envelope.rho, 0.9, 2.0 * std::numbers::pi * rho_min);
 }
 
+ResultChecks check_result(const analysis::AnalysisReport& report, const envelope::SurfaceSamples& samples,
+                          const ReconstructResult& result, bool are_curves_detected) {
+  ResultChecks checks;
+  if (result.method == Method::Envelope) {
+    checks.boundary = check_result_boundary(report.topology, samples, result.envelope);
+  } else {
+    std::vector<Polyline> curves;
+    for (const BoundaryCurve& c : samples.boundary) curves.push_back(c.polyline());
+    checks.boundary = analysis::check_boundary(report.topology, curves, 0.01 * mesh::bbox_diagonal(samples.points));
+  }
+  const bool are_closed_curves_accepted =
+      are_curves_detected && result.power_crust_fallback && result.power_crust_fallback->kept_power_crust;
+  const auto& t = report.topology;
+  const auto& check = checks.boundary;
+  auto& failed = checks.failed;
+  if (!t.is_manifold())
+    failed.push_back("not a 2-manifold (" + std::to_string(t.non_manifold_edges) + " non-manifold edges, " +
+                     std::to_string(t.non_manifold_vertices) + " non-manifold vertices)");
+  if (report.self_intersections && report.self_intersections->face_pairs > 0)
+    failed.push_back("passes through itself (" + std::to_string(report.self_intersections->face_pairs) +
+                     " pairs of faces)");
+  if (!check.missing_curves.empty() && !are_closed_curves_accepted)
+    failed.push_back(std::to_string(check.missing_curves.size()) + " of the input's " +
+                     std::to_string(check.matches.size()) + " boundary curves followed by no border");
+  if (!check.extra_loops.empty())
+    failed.push_back(std::to_string(check.extra_loops.size()) +
+                     (check.extra_loops.size() == 1 ? " border that follows" : " borders that follow") +
+                     " no boundary curve of the input (a hole it has not)");
+  checks.uncovered_patches = uncovered_patches(result.mesh, samples.points, result.envelope.rho);
+  return checks;
+}
+
 namespace {
 
 // The set of each point (label, from 0) when each is joined to those of its 8 nearest that lie
