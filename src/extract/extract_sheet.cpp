@@ -139,10 +139,16 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   progress.report("sheet: cleaning", 0.14);
   // One kd-tree of the surface samples for every step below.
   const NearestIndex samples(surface.points);
-  // Distances that scale with rho use the local rho of the nearest sample (adaptive rho),
-  // hole filling the smallest rho (a hole of 2 pi rho_min is below resolution everywhere).
+  // Distances that scale with rho use the local rho of the nearest sample (adaptive rho).
   const std::vector<double> max_distance = component_distances(envelope, surface, samples, options);
-  const double fill_rho = envelope.local_rho.empty() ? envelope.rho : envelope.rho_min;
+  // Holes below the envelope's resolution where they are: shorter than 2 pi times the local
+  // rho (that of the nearest sample; adaptive rho), or than 2 pi rho.
+  const bool is_rho_local = envelope.local_rho.size() == surface.points.size();
+  auto fill_small_holes = [&]() -> std::size_t {
+    const double bound = options.fill_loops_shorter_than_rel_rho;
+    if (!is_rho_local) return fill_short_loops(sheet, bound * envelope.rho);
+    return fill_short_loops(sheet, bound, [&](const Point3& p) { return envelope.local_rho[samples.nearest(p).first]; });
+  };
   std::vector<Point3> boundary_points;
   for (const auto& c : surface.boundary)
     for (const auto& b : c.vertices) boundary_points.push_back(b.position);
@@ -157,8 +163,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   result.stats.components_dropped += filter_components(
       sheet, samples, max_distance, options.min_component_area_fraction);
   if (options.fill_loops_shorter_than_rel_rho > 0) {
-    result.stats.holes_filled =
-        fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+    result.stats.holes_filled = fill_small_holes();
     // Filling can pinch where a hole touched another loop.
     result.stats.vertices_split += split_pinched_vertices(sheet);
   }
@@ -177,8 +182,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     result.stats.components_dropped += filter_components(
         sheet, samples, max_distance, options.min_component_area_fraction);
     if (options.fill_loops_shorter_than_rel_rho > 0)
-      result.stats.holes_filled +=
-          fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+      result.stats.holes_filled += fill_small_holes();
     if (options.use_fill_away_from_boundary)
       result.stats.holes_filled += fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Fan);
     result.stats.vertices_split += split_pinched_vertices(sheet);
@@ -214,7 +218,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   // Returns the number of discs.
   auto close_holes = [&](bool drop_cut_off_pieces) -> std::size_t {
     if (options.fill_loops_shorter_than_rel_rho > 0)
-      result.stats.holes_filled += fill_short_loops(sheet, options.fill_loops_shorter_than_rel_rho * fill_rho);
+      result.stats.holes_filled += fill_small_holes();
     if (!options.fill_cut_holes) return 0;
     if (drop_cut_off_pieces)
       result.stats.components_dropped += drop_pieces_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);

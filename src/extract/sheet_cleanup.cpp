@@ -330,10 +330,23 @@ std::vector<std::vector<Index>> vertices_of(const std::vector<topology::Boundary
 
 }  // namespace
 
-std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
+std::size_t fill_short_loops(TaggedMesh& t, double max_length, const std::function<double(const Point3&)>& unit) {
   const auto loops = topology::boundary_loops(t.mesh);
+  std::vector<double> bound(loops.size(), max_length);
+  if (unit) {
+    std::vector<double> along;
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      along.clear();
+      for (const Index v : loops[l].vertices) along.push_back(unit(t.mesh.vertices[v]));
+      if (along.empty()) continue;
+      const auto middle = along.begin() + static_cast<std::ptrdiff_t>(along.size() / 2);
+      std::nth_element(along.begin(), middle, along.end());
+      bound[l] = max_length * *middle;
+    }
+  }
   bool any = false;
-  for (const auto& loop : loops) any = any || (loop.length < max_length && loop.vertices.size() >= 3);
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    any = any || (loops[l].length < bound[l] && loops[l].vertices.size() >= 3);
   if (!any) return 0;
   // A loop is a hole of its piece only if the piece is larger than a disc spanning the loop:
   // the rim of a small island (a flat disc of perimeter L has area L^2 / 4 pi, the most any
@@ -347,8 +360,9 @@ std::size_t fill_short_loops(TaggedMesh& t, double max_length) {
     for (const Index v : t.mesh.triangles[f]) face_of_vertex[v] = f;
   }
   std::size_t filled = 0;
-  for (const auto& loop : loops) {
-    if (loop.length >= max_length || loop.vertices.size() < 3) continue;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const auto& loop = loops[l];
+    if (loop.length >= bound[l] || loop.vertices.size() < 3) continue;
     const double spanned = loop.length * loop.length / (4.0 * std::numbers::pi);
     if (area[root[face_of_vertex[loop.vertices.front()]]] < kMinPieceAreaOverSpan * spanned) continue;
     fill_with_fan(t, loop.vertices);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <unordered_set>
@@ -110,8 +111,12 @@ std::size_t drop_pieces_away_from_boundary(TaggedMesh& tagged, const std::vector
 
 /// Fill boundary loops shorter than `max_length` with a fan around their centroid, but not the
 /// rim of a piece no larger than 1.5 times a flat disc of the loop's perimeter (a small
-/// island, which filling would close into a doubled shell). Returns the number filled.
-std::size_t fill_short_loops(TaggedMesh& tagged, double max_length);
+/// island, which filling would close into a doubled shell). With `unit`, `max_length` is in
+/// its units: a loop's bound is max_length times the median of unit(v) over its vertices (the
+/// local rho: a hole shorter than 2 pi local rho is below the envelope's resolution there).
+/// Returns the number filled.
+std::size_t fill_short_loops(TaggedMesh& tagged, double max_length,
+                             const std::function<double(const Point3&)>& unit = {});
 
 /// What make_manifold found and did.
 struct ManifoldRepairStats {

@@ -113,6 +113,21 @@ TEST(FillShortLoops, the_rim_of_a_small_island_is_kept) {
   EXPECT_EQ(fill_short_loops(cup, 6.0), 0u);
 }
 
+// With a unit (the local rho), the bound is in its units along each loop: the pinhole 1.6
+// long is closed under a bound of 2 where the unit is 1, kept where it is 0.5 (a bound of 1
+// there), and the cup's mouth (2 pi) is closed under 2 pi where the unit is over 1 on it.
+TEST(FillShortLoops, the_bound_follows_the_local_unit_along_each_loop) {
+  TaggedMesh fine = sphere_part(12, 11), coarse = sphere_part(12, 11);
+  EXPECT_EQ(fill_short_loops(fine, 2.0, [](const Point3&) { return 0.5; }), 0u);
+  EXPECT_EQ(fill_short_loops(coarse, 2.0, [](const Point3&) { return 1.0; }), 1u);
+  EXPECT_TRUE(topology::analyze_topology(coarse.mesh).is_closed());
+  // The unit read at each rim vertex: large above z = 0 (where the cup's mouth is), small below.
+  TaggedMesh cup = sphere_part(12, 6);
+  EXPECT_EQ(fill_short_loops(cup, 2.0 * std::numbers::pi, [](const Point3& p) { return p.z() > -0.1 ? 1.1 : 0.1; }), 1u);
+  TaggedMesh low = sphere_part(12, 6);
+  EXPECT_EQ(fill_short_loops(low, 2.0 * std::numbers::pi, [](const Point3& p) { return p.z() > -0.1 ? 0.9 : 2.0; }), 0u);
+}
+
 // The square (a grid 0.05 apart) and its samples (0.02 apart), beside it two small discs
 // (0.75% and 0.5% of the area, below the 1% a crumb has): an island 0.3 above the plane with
 // its own samples, and a disc on too few samples; on the square, a doubled patch (0.75%)
