@@ -301,10 +301,22 @@ def count_points(path):
         return sum(1 for line in f if line.strip() and not line.lstrip().startswith("#"))
 
 
+def points_diagonal(path):
+    """The box diagonal of a point file's x y z columns."""
+    with open(path) as f:
+        points = [tuple(map(float, line.split()[:3])) for line in f
+                  if line.strip() and not line.lstrip().startswith("#")]
+    lo, hi = box(points)
+    return math.dist(lo, hi)
+
+
 def run_envcrust(args, points, out_dir, truth_topo):
     out = os.path.join(out_dir, "envcrust.ply")
+    extra = args.envcrust_args.split()
+    if args.rho_rel_diag:
+        extra += ["--rho", repr(args.rho_rel_diag * points_diagonal(points))]
     code, stdout, err, seconds, peak = run([args.envcrust, "reconstruct", points, "-o", out, "--json",
-                                            "--quiet"] + args.envcrust_args.split(), args.timeout)
+                                            "--quiet"] + extra, args.timeout)
     result = {"seconds": round(seconds, 2), "peak_mb": peak and round(peak)}
     if code == "timeout":
         result["error"] = f"timeout after {args.timeout} s"
@@ -468,6 +480,9 @@ def main():
     parser.add_argument("--envcrust", default=os.path.join(REPO, "build", "envcrust"))
     parser.add_argument("--envcrust-args", default="",
                         help="more options for every envcrust run, e.g. '--extract samples' (default: none)")
+    parser.add_argument("--rho-rel-diag", type=float,
+                        help="also pass --rho of this fraction of each input's box diagonal (with --envcrust-args "
+                             "'--rho-adaptive ...': the ceiling of a local rho field)")
     parser.add_argument("--afsr", default=os.path.join(REPO, "build", "bench", "afsr_peer"))
     parser.add_argument("--shapes", help="comma-separated shapes (mesh names, scan:NAME, or open/closed/scans); "
                                          "default all")
