@@ -5,6 +5,8 @@
 // a gap, and a closed shape gets a short false loop that the envelope and sheet then follow.
 #include "boundary_detail.h"
 
+#include "envcrust/median.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -38,13 +40,6 @@ double thickness(const std::vector<Point3>& points, std::size_t i, std::span<con
   return std::sqrt(std::max(0.0, values[0]) / values[1]);
 }
 
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
-}
-
 }  // namespace
 
 std::size_t drop_thick_groups(const std::vector<Point3>& points, const NeighbourTable& table, std::size_t neighbors,
@@ -54,14 +49,14 @@ std::size_t drop_thick_groups(const std::vector<Point3>& points, const Neighbour
   std::vector<double> cloud;
   const std::size_t stride = std::max<std::size_t>(1, points.size() / kCloudProbes);
   for (std::size_t i = 0; i < points.size(); i += stride) cloud.push_back(thickness(points, i, of(i)));
-  const double limit = std::max(kMaxGroupThickness, kMaxGroupThicknessRelCloud * median(std::move(cloud)));
+  const double limit = std::max(kMaxGroupThickness, kMaxGroupThicknessRelCloud * upper_median(std::move(cloud)));
   std::size_t dropped = 0;
   dropped_points = 0;
   std::erase_if(components, [&](const std::vector<std::size_t>& component) {
     std::vector<double> own;
     own.reserve(component.size());
     for (const std::size_t i : component) own.push_back(thickness(points, i, of(i)));
-    if (!(median(std::move(own)) > limit)) return false;
+    if (!(upper_median(std::move(own)) > limit)) return false;
     ++dropped;
     dropped_points += component.size();
     return true;

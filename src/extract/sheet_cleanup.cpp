@@ -2,6 +2,7 @@
 // pieces and crumbs, holes below the envelope's resolution (docs/method.md §8.4).
 #include "sheet_mesh.h"
 
+#include "envcrust/median.h"
 #include "envcrust/mesh_graph.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/topology.h"
@@ -336,12 +337,10 @@ std::size_t fill_short_loops(TaggedMesh& t, double max_length, const std::functi
   if (unit) {
     std::vector<double> along;
     for (std::size_t l = 0; l < loops.size(); ++l) {
+      if (loops[l].vertices.empty()) continue;
       along.clear();
       for (const Index v : loops[l].vertices) along.push_back(unit(t.mesh.vertices[v]));
-      if (along.empty()) continue;
-      const auto middle = along.begin() + static_cast<std::ptrdiff_t>(along.size() / 2);
-      std::nth_element(along.begin(), middle, along.end());
-      bound[l] = max_length * *middle;
+      bound[l] = max_length * upper_median_in_place(along);
     }
   }
   bool any = false;

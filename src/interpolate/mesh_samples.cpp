@@ -1,6 +1,7 @@
 // mesh_samples: the guide, the front, the holes, and the used samples as the vertices.
 #include "interpolate_detail.h"
 
+#include "envcrust/median.h"
 #include "envcrust/nearest_index.h"
 #include "envcrust/neighbour_table.h"
 
@@ -16,14 +17,6 @@ namespace envcrust::interpolate {
 namespace {
 
 constexpr Index kUnused = std::numeric_limits<Index>::max();
-
-// The upper median of `values` (taken by copy: nth_element reorders them); 0 when empty.
-double median_of(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 }  // namespace
 
@@ -42,7 +35,7 @@ std::vector<Point3> pull_towards_sheet(const std::vector<Point3>& samples, const
     const double there = spacing[index.nearest(nearest[i]).first];
     offset[i] = there > 0 ? std::sqrt(CGAL::squared_distance(samples[i], nearest[i])) / there : 0.0;
   });
-  stats.median_offset_rel_spacing = median_of(offset);
+  stats.median_offset_rel_spacing = upper_median(offset);
   // Exact samples sit on their sheet but where it rounds a crease or corner off, and there the
   // samples are right: only noisy samples (a median offset of a tenth of a spacing and more)
   // are pulled in.
@@ -85,7 +78,7 @@ InterpolateResult mesh_samples(const std::vector<Point3>& samples, const Triangl
   InterpolateResult out;
   if (samples.size() < 3 || sheet.triangles.empty()) return out;
   const std::vector<double> spacing = detail::local_spacing(samples);
-  out.stats.spacing = median_of(spacing);
+  out.stats.spacing = upper_median(spacing);
   const detail::SheetGuide guide(sheet);
   std::vector<char> is_meshed;
   const std::vector<Point3> placed = detail::pull_towards_sheet(samples, spacing, guide, options, is_meshed, out.stats);

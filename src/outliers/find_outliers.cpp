@@ -2,6 +2,7 @@
 #include "envcrust/outliers.h"
 
 #include "envcrust/errors.h"
+#include "envcrust/median.h"
 #include "envcrust/mesh.h"
 #include "envcrust/neighbour_table.h"
 
@@ -24,12 +25,6 @@ void validate(const OutlierOptions& o) {
   if (!(o.off_plane_rel_radius > 0 && o.off_plane_rel_radius <= 1)) fail("off_plane_rel_radius", o.off_plane_rel_radius);
   if (!(o.off_plane_rel_noise > 0)) fail("off_plane_rel_noise", o.off_plane_rel_noise);
   if (!(o.isolated_rel_spacing > 1)) fail("isolated_rel_spacing", o.isolated_rel_spacing);
-}
-
-double median_of(std::vector<double>& values) {
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
 }
 
 // What one point's neighbourhood says about it.
@@ -66,7 +61,7 @@ Local fit(const Point3& p, const std::vector<Point3>& points, const std::uint32_
     const Point3& q = points[neighbours[j]];
     scratch.push_back(std::abs(normal.dot(Eigen::Vector3d(q.x(), q.y(), q.z()) - mean)));
   }
-  out.residual = 1.4826 * median_of(scratch);
+  out.residual = 1.4826 * upper_median_in_place(scratch);
   return out;
 }
 
@@ -115,8 +110,8 @@ OutlierReport find_outliers(const std::vector<Point3>& points, const NeighbourTa
       }
       const Local& l = local[i];
       off_plane[i] = l.off_plane > options.off_plane_rel_radius * l.radius &&
-                     l.off_plane > options.off_plane_rel_noise * median_of(residuals);
-      isolated[i] = l.mean_distance > options.isolated_rel_spacing * median_of(spacings);
+                     l.off_plane > options.off_plane_rel_noise * upper_median_in_place(residuals);
+      isolated[i] = l.mean_distance > options.isolated_rel_spacing * upper_median_in_place(spacings);
     }
   });
   for (std::size_t i = 0; i < n; ++i) {
