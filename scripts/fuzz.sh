@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Fuzz every file reader with libFuzzer (ASan + UBSan) for a while (docs/fuzzing.md).
-#   scripts/fuzz.sh [--seconds N] [--if-available] [READER ...]
+#   scripts/fuzz.sh [--seconds N] [--runs N] [--if-available] [READER ...]
 # Builds the harnesses of fuzz/ with Clang in build-fuzz (ENVCRUST_FUZZ_BUILD_DIR), runs each
 # for N seconds (default 60) on a copy of its seed corpus (fuzz/corpus/READER stays as
 # committed), prints per reader the executions and the outcome, and exits 1 on any crash,
 # leak, hang or out-of-memory, naming the reproducer saved under build-fuzz/crashes/.
+# --runs N: stop each reader after N executions instead (with --seconds too: whichever comes first).
 # --if-available: exit 0 with a message when Clang or libFuzzer is missing (the test command).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -12,18 +13,28 @@ build="${ENVCRUST_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 jobs="${ENVCRUST_JOBS:-2}"
 all_readers=(ply off obj stl xyz pts csv iges nurbs_json polyline balls las)
 seconds=60
+seconds_given=0
+runs=""
 if_available=0
 readers=()
 while (($#)); do
   case "$1" in
-    --seconds) seconds="${2:?--seconds needs a number}"; shift 2 ;;
+    --seconds) seconds="${2:?--seconds needs a number}"; seconds_given=1; shift 2 ;;
+    --runs) runs="${2:?--runs needs a number}"; shift 2 ;;
     --if-available) if_available=1; shift ;;
-    -h|--help) sed -n '2,8p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "fuzz: unknown option $1" >&2; exit 2 ;;
     *) readers+=("$1"); shift ;;
   esac
 done
 [[ "$seconds" =~ ^[0-9]+$ ]] && ((seconds > 0)) || { echo "fuzz: --seconds wants a whole number > 0, got '$seconds'" >&2; exit 2; }
+[ -z "$runs" ] || { [[ "$runs" =~ ^[0-9]+$ ]] && ((runs > 0)); } || { echo "fuzz: --runs wants a whole number > 0, got '$runs'" >&2; exit 2; }
+# With --runs alone the executions are the only limit, not the 60 s default.
+limits=(-max_total_time="$seconds")
+if [ -n "$runs" ]; then
+  limits=(-runs="$runs")
+  ((seconds_given)) && limits+=(-max_total_time="$seconds")
+fi
 ((${#readers[@]})) || readers=("${all_readers[@]}")
 for r in "${readers[@]}"; do
   [[ " ${all_readers[*]} " == *" $r "* ]] || { echo "fuzz: unknown reader '$r' (one of: ${all_readers[*]})" >&2; exit 2; }
@@ -71,7 +82,7 @@ mkdir -p "$crashes" "$logs"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 failed=()
-printf '%-11s %12s %8s  %s\n' reader executions exec/s outcome
+printf '%-11s %12s %8s %8s  %s\n' reader executions exec/s seconds outcome
 for r in "${readers[@]}"; do
   dict="$root/fuzz/dict/$r.dict"
   case "$r" in xyz|pts|csv) dict="$root/fuzz/dict/points.dict" ;; esac
@@ -79,10 +90,11 @@ for r in "${readers[@]}"; do
   mkdir -p "$crashes/$r"
   log="$logs/$r.log"
   status=0
+  reader_start=$(date +%s)
   # -timeout: one input over 10 s is a hang; -rss_limit_mb also caps a single allocation.
-  nice -n 10 "$build/fuzz/${r}_fuzz" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  nice -n 10 "$build/fuzz/${r}_fuzz" "${limits[@]}" -timeout=10 -rss_limit_mb=2048 \
     -dict="$dict" -artifact_prefix="$crashes/$r/" -print_final_stats=1 "$work/$r" >"$log" 2>&1 || status=$?
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  executed=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   if ((status == 0)); then
     outcome="ok"
@@ -92,9 +104,11 @@ for r in "${readers[@]}"; do
     outcome="FAILED (${kind:-exit $status}): reproducer ${artifact:-none}, log $log"
     failed+=("$r")
   fi
-  printf '%-11s %12s %8s  %s\n' "$r" "${runs:-?}" "${rate:-?}" "$outcome"
+  printf '%-11s %12s %8s %8s  %s\n' "$r" "${executed:-?}" "${rate:-?}" "$(($(date +%s) - reader_start))" "$outcome"
 done
-echo "fuzz: $((${#readers[@]} - ${#failed[@]})) of ${#readers[@]} readers clean after ${seconds} s each; total $(($(date +%s) - start)) s"
+limit="${seconds} s"
+[ -n "$runs" ] && limit="$runs executions$( ((seconds_given)) && echo " or ${seconds} s")"
+echo "fuzz: $((${#readers[@]} - ${#failed[@]})) of ${#readers[@]} readers clean after ${limit} each; total $(($(date +%s) - start)) s"
 if ((${#failed[@]})); then
   echo "fuzz: findings in: ${failed[*]} (replay one: $build/fuzz/READER_fuzz FILE)" >&2
   exit 1
