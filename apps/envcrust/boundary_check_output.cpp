@@ -2,6 +2,7 @@
 #include "boundary_check_output.h"
 
 #include "envcrust/mesh.h"
+#include "envcrust/pipeline.h"
 
 #include <algorithm>
 #include <sstream>
@@ -80,7 +81,8 @@ nlohmann::json boundary_check_json(const analysis::BoundaryCheck& check, const s
 
 std::string uncovered_patches_warning(std::size_t patches) {
   return "the result leaves out " + std::to_string(patches) + (patches == 1 ? " patch" : " patches") +
-         " of the input's samples (8 or more samples farther than 2 rho from it)";
+         " of the input's samples (" + std::to_string(pipeline::kMinUncoveredPatch) +
+         " or more samples farther than 2 rho from it)";
 }
 
 }  // namespace envcrust::cli

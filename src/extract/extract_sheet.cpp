@@ -1,9 +1,11 @@
-// extract_sheet: raw Voronoi sheet, triangles, cleaning, projection (docs/method.md §8).
+// extract_sheet: raw Voronoi sheet, triangles, cleaning, projection, then the repairs of
+// sheet_repair.h (docs/method.md §8).
 #include "envcrust/errors.h"
 #include "envcrust/extract.h"
 
 #include "sheet_mesh.h"
 #include "sheet_projection.h"
+#include "sheet_repair.h"
 #include "voronoi_sheet.h"
 
 #include "envcrust/mesh.h"
@@ -15,23 +17,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <iomanip>
 #include <sstream>
 
 namespace envcrust::extract {
 namespace {
-
-// Notches a cut leaves in the rim (SheetOptions::close_cut_notches), in rho: border vertices
-// within kNotchOnCurve of a curve lie on it (snapped ones lie on it exactly); a notch reaches
-// kNotchMinDepth in (a cut ball of 0.5 rho, the self-intersection cut's, reaches about that
-// far), and spans at most kNotchMaxWidth along the curve (a handle ball of 1.5 rho: 3 rho).
-constexpr double kNotchOnCurve = 0.1;
-constexpr double kNotchMinDepth = 0.25;
-constexpr double kNotchMaxWidth = 4.0;
-// A self-intersection cut round that leaves no fewer pairs is retried with twice the radius,
-// up to this many times the first radius. Measured on the face scan's points:
-// at 0.5 rho a round left its 84 pairs, at 1 rho none.
-constexpr double kMaxCutWidening = 4.0;
 
 void validate(const SheetOptions& o) {
   auto fail = [](const std::string& field, double value) {
@@ -141,17 +130,10 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   const NearestIndex samples(surface.points);
   // Distances that scale with rho use the local rho of the nearest sample (adaptive rho).
   const std::vector<double> max_distance = component_distances(envelope, surface, samples, options);
+  const RepairSite site = make_repair_site(envelope, surface, samples, max_distance);
   // Holes below the envelope's resolution where they are: shorter than 2 pi times the local
-  // rho (that of the nearest sample; adaptive rho), or than 2 pi rho.
-  const bool is_rho_local = envelope.local_rho.size() == surface.points.size();
-  auto fill_small_holes = [&]() -> std::size_t {
-    const double bound = options.fill_loops_shorter_than_rel_rho;
-    if (!is_rho_local) return fill_short_loops(sheet, bound * envelope.rho);
-    return fill_short_loops(sheet, bound, [&](const Point3& p) { return envelope.local_rho[samples.nearest(p).first]; });
-  };
-  std::vector<Point3> boundary_points;
-  for (const auto& c : surface.boundary)
-    for (const auto& b : c.vertices) boundary_points.push_back(b.position);
+  // rho along them (adaptive rho), or than 2 pi rho.
+  auto fill_small_holes = [&] { return extract::fill_small_holes(sheet, site, options.fill_loops_shorter_than_rel_rho); };
   if (options.max_face_distance_rel_rho > 0)
     result.stats.far_faces_removed = drop_far_faces(sheet, samples, far_distances(envelope, surface, samples, options));
   // Outer medial-axis pieces go first: they would otherwise meet the sheet at non-manifold
@@ -184,7 +166,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     if (options.fill_loops_shorter_than_rel_rho > 0)
       result.stats.holes_filled += fill_small_holes();
     if (options.use_fill_away_from_boundary)
-      result.stats.holes_filled += fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Fan);
+      result.stats.holes_filled += fill_loops_away_from_boundary(sheet, site.boundary_points, 2.0 * envelope.rho, HoleFill::Fan);
     result.stats.vertices_split += split_pinched_vertices(sheet);
     compact_vertices(sheet);
     const auto snapped = snap_border(sheet, surface, envelope.rho,
@@ -208,152 +190,52 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
                               " faces dropped at non-manifold edges or vertices that could not be repaired");
   seconds.manifold_check = clock.lap();
   progress.report("sheet: orientation cut", 0.44);
-  // After a cut: the removed bands or balls leave crumbs between them (dropped) and
-  // pinholes where a band or ball barely touched the sheet (fanned, as every hole below the
-  // envelope's resolution is); with fill_cut_holes every hole away from the boundary curves
-  // is closed by a smooth disc, once the pieces the cut has separated from every boundary
-  // curve are dropped. Returns the text the cut's warning ends with.
-  // Pinholes fanned, then (with fill_cut_holes) the holes away from the boundary curves
-  // closed with discs, optionally once the pieces cut off from every curve are dropped.
-  // Returns the number of discs.
-  auto close_holes = [&](bool drop_cut_off_pieces) -> std::size_t {
-    if (options.fill_loops_shorter_than_rel_rho > 0)
-      result.stats.holes_filled += fill_small_holes();
-    if (!options.fill_cut_holes) return 0;
-    if (drop_cut_off_pieces)
-      result.stats.components_dropped += drop_pieces_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho);
-    const std::size_t filled = fill_loops_away_from_boundary(sheet, boundary_points, 2.0 * envelope.rho, HoleFill::Patch);
-    // A cut that reached the rim opened a notch in it rather than a hole: closed back to the
-    // curve (a disc glued along an arc of the border: the topology stays).
-    if (options.close_cut_notches)
-      result.stats.cut_notches_closed += close_border_notches(sheet, surface, kNotchOnCurve * envelope.rho,
-                                                              kNotchMinDepth * envelope.rho,
-                                                              kNotchMaxWidth * envelope.rho);
-    return filled;
-  };
-  auto tidy_after_cut = [&]() -> std::string {
-    result.stats.components_dropped +=
-        filter_components(sheet, samples, max_distance, options.min_component_area_fraction);
-    const std::size_t closed = close_holes(true);
-    result.stats.cut_holes_filled += closed;
-    // The repair can open holes of its own where it removes faces or splits a vertex:
-    // pinholes, fanned too, and slits (on the bunny's ear tip a 4-vertex loop 23 mm long and
-    // under 1 mm wide), closed like the cut holes.
-    const ManifoldRepairStats repaired = make_manifold(sheet);
-    if (repaired.faces_dropped + repaired.non_manifold_faces_removed + repaired.degenerate_faces_removed +
-            repaired.vertices_split > 0) {
-      result.stats.cut_holes_filled += close_holes(false);
-      make_manifold(sheet);
-    }
-    if (closed == 0) return "";
-    return "; " + std::to_string(closed) + " hole" + (closed == 1 ? "" : "s") + " closed with a disc";
+  // The repairs, last: each closes the holes it leaves.
+  const CutHoleOptions holes{.fill_loops_shorter_than_rel_rho = options.fill_loops_shorter_than_rel_rho,
+                             .min_component_area_fraction = options.min_component_area_fraction,
+                             .fill_cut_holes = options.fill_cut_holes,
+                             .close_cut_notches = options.close_cut_notches};
+  auto count_holes = [&](const CutHoleStats& h) {
+    result.stats.components_dropped += h.components_dropped;
+    result.stats.holes_filled += h.small_holes_filled;
+    result.stats.cut_holes_filled += h.discs;
+    result.stats.cut_notches_closed += h.notches_closed;
   };
   if (options.cut_to_orientable) {
-    const OrientableCutStats cut =
-        cut_to_orientable(sheet, options.orientable_cut_rel_rho * envelope.rho,
-                          options.orientable_max_twist_loop_rel_rho * envelope.rho);
-    result.stats.orientation_seams = cut.seams;
-    result.stats.faces_removed_at_seams = cut.faces_removed;
-    result.stats.orientation_twists_kept = cut.twists_kept;
-    if (cut.twists_kept > 0) {
-      std::ostringstream w;
-      w << "the sheet has " << cut.twists_kept << " orientation-reversing twist" << (cut.twists_kept == 1 ? "" : "s")
-        << " that no loop shorter than " << std::setprecision(3) << options.orientable_max_twist_loop_rel_rho
-        << " rho reverses: kept as part of the surface (a Moebius strip's twist), not cut";
-      result.warnings.push_back(w.str());
-    }
-    if (cut.seams > 0) {
-      const std::string closed = tidy_after_cut();
-      result.warnings.push_back("the sheet was non-orientable: " + std::to_string(cut.faces_removed) +
-                                " faces removed around " + std::to_string(cut.seams) + " orientation seam" +
-                                (cut.seams == 1 ? "" : "s") +
-                                (cut.still_non_orientable ? "; still non-orientable after 3 rounds" : "") + closed);
-    }
+    const OrientationRepairStats r = repair_orientation(
+        sheet, site,
+        {.cut_rel_rho = options.orientable_cut_rel_rho,
+         .max_twist_loop_rel_rho = options.orientable_max_twist_loop_rel_rho},
+        holes, result.warnings);
+    result.stats.orientation_seams = r.cut.seams;
+    result.stats.faces_removed_at_seams = r.cut.faces_removed;
+    result.stats.orientation_twists_kept = r.cut.twists_kept;
+    count_holes(r.holes);
   }
   seconds.orientable_cut = clock.lap();
   progress.report("sheet: handle cut", 0.66);
   if (options.cut_handles_rel_rho > 0) {
-    const HandleCutStats cut = cut_local_handles(sheet, options.cut_handles_rel_rho * envelope.rho);
-    result.stats.handle_balls = cut.balls;
-    result.stats.faces_removed_at_handles = cut.faces_removed;
-    if (cut.balls > 0) {
-      const std::string closed = tidy_after_cut();
-      std::ostringstream w;
-      w << "the sheet was not a disc in " << cut.balls << " ball" << (cut.balls == 1 ? "" : "s") << " of radius "
-        << options.cut_handles_rel_rho << " rho: " << cut.faces_removed << " faces removed there" << closed;
-      result.warnings.push_back(w.str());
-    }
+    const HandleRepairStats r =
+        repair_handles(sheet, site, {.radius_rel_rho = options.cut_handles_rel_rho}, holes, result.warnings);
+    result.stats.handle_balls = r.cut.balls;
+    result.stats.faces_removed_at_handles = r.cut.faces_removed;
+    count_holes(r.holes);
   }
   seconds.handle_cut = clock.lap();
   if (options.self_intersection_cut_rel_rho > 0) {
     progress.report("sheet: self-intersections", 0.9);
-    // Relaxed first: most folds open without losing faces; what is left is cut out and the
-    // holes closed with discs, in rounds (below).
-    mesh::SelfIntersections found = mesh::self_intersections(sheet.mesh, 0);
-    result.stats.self_intersections_found = found.face_pairs;
-    if (found.face_pairs > 0) {
-      const std::size_t first = found.face_pairs;
-      found = smooth_self_intersections(sheet.mesh, std::move(found), 3);
-      result.stats.self_intersections_smoothed = first - std::min(first, found.face_pairs);
-      result.stats.self_intersections_cut = found.face_pairs;
-      // Each round cuts, closes the holes, then checks what that made: the cut removed every
-      // face that passed through another, so only the faces the repairs and discs made can
-      // now. A round is kept only when it leaves fewer pairs than it found. A round that would
-      // leave less than 3/4 of the faces is undone too: a sheet that crosses itself nearly
-      // everywhere (an input far too sparse for its size) is kept rather than cut away, and
-      // the report says so.
-      const std::size_t faces_at_start = sheet.mesh.triangles.size(), to_cut = found.face_pairs;
-      const int max_rounds = std::max(1, options.self_intersection_cut_rounds);
-      std::size_t removed = 0;
-      int rounds = 0;
-      // A round that leaves no fewer pairs is tried again with twice the radius (the discs
-      // closing a small cut can pass through the folds around it; a wider cut takes them in),
-      // up to kMaxCutWidening times the radius.
-      double radius = options.self_intersection_cut_rel_rho * envelope.rho;
-      const double max_radius = kMaxCutWidening * radius;
-      while (found.face_pairs > 0 && rounds < max_rounds) {
-        TaggedMesh previous = sheet;
-        const std::size_t removed_now = cut_self_intersections(sheet, found, radius).faces_removed;
-        tidy_after_cut();
-        if (4 * sheet.mesh.triangles.size() < 3 * faces_at_start) {
-          sheet = std::move(previous);
-          if (rounds == 0)
-            result.warnings.push_back("the sheet passes through itself at " + std::to_string(to_cut) +
-                                      " face pairs, too many to cut out (" + std::to_string(removed_now) + " of " +
-                                      std::to_string(faces_at_start) + " faces): left as it is");
-          break;
-        }
-        const std::vector<char> made = faces_not_in(sheet.mesh, previous.mesh);
-        mesh::SelfIntersections left =
-            smooth_self_intersections(sheet.mesh, mesh::self_intersections(sheet.mesh, 0, &made), 3);
-        if (left.face_pairs >= found.face_pairs) {
-          sheet = std::move(previous);
-          if (2 * radius > max_radius) break;
-          radius *= 2;
-          ++result.stats.self_intersection_cut_widenings;
-          continue;
-        }
-        found = std::move(left);
-        removed += removed_now;
-        ++rounds;
-      }
-      if (rounds == 0) result.stats.self_intersections_cut = 0;
-      result.stats.self_intersection_cut_rounds = rounds;
-      result.stats.faces_removed_at_self_intersections = removed;
-    }
-    result.stats.self_intersections_left = found.face_pairs;
-    if (result.stats.self_intersections_found > 0) {
-      std::ostringstream w;
-      w << "the sheet passed through itself at " << result.stats.self_intersections_found
-        << " face pairs: relaxed there"
-        << (result.stats.self_intersections_cut > 0
-                ? ", then " + std::to_string(result.stats.faces_removed_at_self_intersections) + " faces removed around the " +
-                      std::to_string(result.stats.self_intersections_cut) + " pairs that was not enough for, and the holes closed (" +
-                      std::to_string(result.stats.self_intersection_cut_rounds) + " round" +
-                      (result.stats.self_intersection_cut_rounds == 1 ? "" : "s") + ")"
-                : std::string());
-      result.warnings.push_back(w.str());
-    }
+    const SelfIntersectionRepairStats r = repair_self_intersections(
+        sheet, site,
+        {.cut_rel_rho = options.self_intersection_cut_rel_rho, .rounds = options.self_intersection_cut_rounds},
+        holes, result.warnings);
+    result.stats.self_intersections_found = r.found;
+    result.stats.self_intersections_smoothed = r.smoothed;
+    result.stats.self_intersections_cut = r.cut;
+    result.stats.self_intersection_cut_rounds = r.rounds;
+    result.stats.self_intersection_cut_widenings = r.widenings;
+    result.stats.faces_removed_at_self_intersections = r.faces_removed;
+    result.stats.self_intersections_left = r.left;
+    count_holes(r.holes);
   }
   seconds.self_intersection_cut = clock.lap();
   result.mesh = std::move(sheet.mesh);

@@ -305,7 +305,7 @@ TEST_F(CliTest, a_result_that_leaves_a_patch_of_samples_out_says_so) {
   EXPECT_EQ(j["checks"]["uncovered_patches"], 1);
   EXPECT_EQ(j["analysis"]["components"], 1);
   const std::string said =
-      "the result leaves out 1 patch of the input's samples (8 or more samples farther than 2 rho from it)";
+      "the result leaves out 1 patch of the input's samples (9 or more samples farther than 2 rho from it)";
   EXPECT_NE(std::find(j["warnings"].begin(), j["warnings"].end(), said), j["warnings"].end()) << j["warnings"];
   // Without the patch the same hemisphere leaves nothing out.
   ASSERT_EQ(run_envcrust("sample hemisphere -n 2000 -o " + path("g.xyz") + " --quiet").exit_code, 0);
