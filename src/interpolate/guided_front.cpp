@@ -4,7 +4,11 @@
 // facet's verdict is kept.
 #include "interpolate_detail.h"
 
+#include "envcrust/mesh.h"
+
 #include <CGAL/Advancing_front_surface_reconstruction.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -88,9 +92,24 @@ class GuidedPriority {
 std::vector<std::array<Index, 3>> guided_front(const std::vector<Point3>& samples,
                                                const std::vector<double>& spacing, const SheetGuide& guide,
                                                const InterpolateOptions& options, std::size_t& refused) {
+  using Vb = CGAL::Advancing_front_surface_reconstruction_vertex_base_3<Kernel>;
+  using Cb = CGAL::Advancing_front_surface_reconstruction_cell_base_3<Kernel>;
+  using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, CGAL::Triangulation_data_structure_3<Vb, Cb>>;
+  // Inserted along a Hilbert curve, each point located from the previous one: CGAL's range
+  // insertion shuffles first with its process-wide generator, seeded by the clock, and on
+  // cospherical samples (a grid) the triangulation, so the output, changed from run to run.
+  Delaunay dt;
+  Delaunay::Vertex_handle hint;
+  for (const std::size_t i : mesh::hilbert_order(samples)) {
+    const std::size_t before = dt.number_of_vertices();
+    hint = dt.insert(samples[i], hint == Delaunay::Vertex_handle() ? Delaunay::Cell_handle() : hint->cell());
+    if (dt.number_of_vertices() > before) hint->id() = i;  // a repeated point keeps its first index
+  }
+  CGAL::Advancing_front_surface_reconstruction<Delaunay, GuidedPriority> front(
+      dt, GuidedPriority(spacing, guide, options, refused));
+  front.run();
   std::vector<std::array<std::size_t, 3>> facets;
-  CGAL::advancing_front_surface_reconstruction(samples.begin(), samples.end(), std::back_inserter(facets),
-                                               GuidedPriority(spacing, guide, options, refused));
+  CGAL::write_triple_indices(std::back_inserter(facets), front);
   std::vector<std::array<Index, 3>> faces;
   faces.reserve(facets.size());
   for (const auto& f : facets)
