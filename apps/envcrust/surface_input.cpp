@@ -76,20 +76,18 @@ LoadedSurface load_point_samples(AttributedPoints read, bool are_normals_text_co
 // A mesh file's samples, and its vertex colours (and a PLY's other vertex properties) for the
 // output's vertices.
 LoadedSurface load_mesh_samples(TriangleMesh mesh, const std::string& spec, const InputSettings& sampling) {
-  LoadedSurface out;
+  input::MeshInput in{std::move(mesh), {}};
+  if (const std::string ext = io::extension_of(spec); ext == "ply" || ext == "obj") {
+    AttributedPoints vertices = io::read_attributed_points(spec);
+    // Both readers list the file's vertices in its order; should a reader ever not, the
+    // attributes are left out rather than put on the wrong vertices.
+    if (vertices.points.points == in.mesh.vertices) in.vertex_attributes = std::move(vertices.attributes);
+  }
   try {
-    out = loaded_as(input::prepare_mesh(std::move(mesh), named_options(spec, sampling)), "mesh");
+    return loaded_as(input::prepare_mesh(std::move(in), named_options(spec, sampling)), "mesh");
   } catch (const input::NotASurface& e) {
     throw InvalidInput(std::string(e.what()) + " (--as-points reads its vertices as a point file)");
   }
-  if (const std::string ext = io::extension_of(spec); ext == "ply" || ext == "obj") {
-    AttributedPoints vertices = io::read_attributed_points(spec);
-    if (!vertices.attributes.empty()) {
-      out.attribute_points = std::move(vertices.points.points);
-      out.attributes = std::move(vertices.attributes);
-    }
-  }
-  return out;
 }
 
 // builtin:NAME or a NURBS file, sampled (with its exact normals and boundary, or without them

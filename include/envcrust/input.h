@@ -133,15 +133,27 @@ class NotASurface : public InvalidInput {
 ///   InputOptions::name when it is set ("scan.xyz: ...").
 PreparedInput prepare_points(PointInput input, const InputOptions& options = {}, const Progress& progress = {});
 
+/// A triangle mesh to prepare, as read.
+struct MeshInput {
+  TriangleMesh mesh;
+  /// Empty, or one value per vertex of `mesh` (a PLY's vertex colours and other vertex
+  /// properties, as io::read_attributed_points reads them from the same file).
+  PointAttributes vertex_attributes;
+};
+
 /// Samples of M from a triangle mesh: vertices at the same coordinates welded, repeated and
 /// degenerate faces dropped; the used vertices with area-weighted normal lines and the face
 /// centres with face normals; the border loops as boundary curves; the mesh's orientability
 /// and genus in `kind`; long sharp creases rounded off or joined (InputOptions::creases); a mesh
-/// far from the origin moved to a local one (PreparedInput::origin).
-/// Attributes are not read from a mesh: set attribute_points and attributes from the file.
+/// far from the origin moved to a local one (PreparedInput::origin). The vertex attributes of
+/// the vertices faces use go to attribute_points and attributes, in the samples' frame.
 /// @throws InvalidInput "the mesh has no faces", "the mesh has no faces but 2 that use a vertex
-///   twice", "the mesh has no face of positive area", a non-finite vertex ("vertex 3 ...").
+///   twice", "the mesh has no face of positive area", a non-finite vertex ("vertex 3 ..."),
+///   "the vertex colours number 3 for 4 vertices" (the same for a scalar attribute, by name).
 /// @throws NotASurface "edge (0, 1) has 3 faces: the mesh is not a surface".
+PreparedInput prepare_mesh(MeshInput input, const InputOptions& options = {});
+
+/// prepare_mesh of a mesh without vertex attributes.
 PreparedInput prepare_mesh(TriangleMesh mesh, const InputOptions& options = {});
 
 /// Points of the prepared samples' frame moved back to the input's coordinates: each plus

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "envcrust/boundary.h"
-#include "envcrust/normals.h"
+#include "envcrust/input.h"
 #include "envcrust/power_crust.h"
 #include "envcrust/topology.h"
 #include "experiment_list.h"
@@ -50,20 +50,20 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
     return out;
   }
   const ScanData& scan = *options.scan;
-  envelope::SurfaceSamples samples;
-  samples.points = scan.points.points;
-  std::string normal_source = "from the file";
-  // One neighbour search for the normal fits and the boundary's angle gaps, as `reconstruct`.
-  const NeighbourTable neighbours(samples.points, static_cast<unsigned>(boundary::BoundaryOptions{}.neighbors));
-  if (scan.points.has_normals()) {
-    samples.normals = scan.points.normals;
-  } else {
-    samples.normals = normals::estimate_normal_lines(samples.points, neighbours);
-    normal_source = "PCA";
-  }
+  // The samples as `reconstruct` prepares a point file (duplicates merged, stray samples
+  // removed, normal lines fitted when the file has none, boundary detected), so the figure
+  // shows what the tool does. The reference is in the file's coordinates: no local origin.
+  input::InputOptions preparation;
+  preparation.name = scan.name;
+  preparation.use_local_origin = false;
+  input::PointInput in;
+  in.points.points = scan.points;
+  const std::string normal_source = scan.points.has_normals() ? "from the file" : "PCA";
   step(options, "scan", 0.05);
-  const auto detection = boundary::detect_boundary(samples.points, samples.normals, neighbours);
-  samples.boundary = detection.curves;
+  input::PreparedInput prepared = input::prepare_points(std::move(in), preparation);
+  const envelope::SurfaceSamples& samples = prepared.samples;
+  const std::vector<std::string> detection_warnings =
+      prepared.detection ? prepared.detection->warnings : std::vector<std::string>{};
 
   analysis::Reference reference;
   surfaces::ExpectedTopology expected;
@@ -106,10 +106,7 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
   std::sort(sorted.begin(), sorted.end());
 
   step(options, "scan", 0.5);
-  pipeline::InputKind kind;  // a point file, as `reconstruct` runs it
-  kind.is_builtin = false;
-  kind.are_normals_estimated = !scan.points.has_normals();
-  auto ro = pipeline::options_for_input(kind, method_options(pipeline::Method::Envelope, options.seed));
+  auto ro = pipeline::options_for_input(prepared.kind, method_options(pipeline::Method::Envelope, options.seed));
   ro.use_power_crust_fallback = false;  // the envelope's own result, beside the direct one
   Trial envelope_trial = run_trial(samples, ro, reference, expected, true);
   if (!has_expected) envelope_trial.is_topology_correct = false;
@@ -131,7 +128,7 @@ ExperimentResult run_scan(const ExperimentOptions& options) {
   normals_table.columns = {"median", "90th percentile", "max"};
   normals_table.add_row({sorted[sorted.size() / 2], sorted[sorted.size() * 9 / 10], sorted.back()});
   out.tables.push_back(std::move(normals_table));
-  for (const auto& w : detection.warnings) out.notes.push_back("boundary detection: " + w);
+  for (const auto& w : detection_warnings) out.notes.push_back("boundary detection: " + w);
   for (const auto& w : envelope_trial.result.warnings) out.notes.push_back("envelope: " + w);
 
   if (!options.use_figures) return out;

@@ -58,17 +58,53 @@ void add_vertex_and_face_samples(const TriangleMesh& mesh, const std::vector<Vec
   }
 }
 
+void check_attribute_count(std::size_t count, std::size_t vertices, const std::string& what,
+                           const std::string& name) {
+  if (count != vertices)
+    throw InvalidInput(named(name, "the vertex " + what + " number " + std::to_string(count) + " for " +
+                                       std::to_string(vertices) + " vertices"));
+}
+
+// The attributes of the vertices the faces use, at those vertices (the output's vertices take
+// the nearest one's): an unused vertex is no point of the surface.
+void keep_vertex_attributes(const TriangleMesh& mesh, const PointAttributes& attributes, const std::string& name,
+                            PreparedInput& out) {
+  if (attributes.empty()) return;
+  if (attributes.has_colours()) check_attribute_count(attributes.colours.size(), mesh.vertices.size(), "colours", name);
+  for (std::size_t c = 0; c < attributes.scalars.size(); ++c)
+    check_attribute_count(attributes.scalars[c].size(), mesh.vertices.size(),
+                          "values of '" + (c < attributes.names.size() ? attributes.names[c] : std::string()) + "'",
+                          name);
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto& t : mesh.triangles)
+    for (Index v : t)
+      if (v < used.size()) used[v] = true;
+  std::vector<std::size_t> picks;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (used[v]) {
+      picks.push_back(v);
+      out.attribute_points.push_back(mesh.vertices[v]);
+    }
+  out.attributes = attributes.pick(picks);
+}
+
 }  // namespace
 
 PreparedInput prepare_mesh(TriangleMesh input, const InputOptions& options) {
+  return prepare_mesh(MeshInput{std::move(input), {}}, options);
+}
+
+PreparedInput prepare_mesh(MeshInput input, const InputOptions& options) {
   PreparedInput out;
   out.kind.is_builtin = false;
-  TriangleMesh mesh = cleaned(std::move(input), options.name, out.notes);
+  keep_vertex_attributes(input.mesh, input.vertex_attributes, options.name, out);
+  TriangleMesh mesh = cleaned(std::move(input.mesh), options.name, out.notes);
   if (options.use_local_origin) {
     out.origin = local_origin(mesh.vertices);
     if (out.origin != CGAL::NULL_VECTOR) {
       out.notes.push_back(origin_note(mesh.vertices, out.origin));
       subtract_origin(mesh.vertices, out.origin);
+      subtract_origin(out.attribute_points, out.origin);
     }
   }
   const auto vertex_normals = normals::mesh_vertex_normal_lines(mesh);

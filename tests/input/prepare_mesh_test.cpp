@@ -1,6 +1,6 @@
 // Tests of input::prepare_mesh: a disc, an annulus and a cylinder give their border loops and
 // topology, a triangle soup is welded back into one piece, a folded sheet's crease is rounded
-// off or joined, and the exact refusals.
+// off or joined, vertex attributes reach the output's side, and the exact refusals.
 #include "fixtures/shapes.h"
 
 #include "envcrust/errors.h"
@@ -78,10 +78,39 @@ TEST(PrepareMesh, a_folded_sheets_crease_is_rounded_off_or_joined) {
   EXPECT_GT(turned, 0u);
 }
 
+// The used vertices keep their colours and scalars, at their own positions in the samples'
+// frame (here a local origin far from (0, 0, 0)); a vertex no face uses is no point of M.
+TEST(PrepareMesh, vertex_attributes_follow_the_used_vertices_into_the_samples_frame) {
+  const Vector3 far(500000, 5000000, 0);
+  input::MeshInput in;
+  in.mesh = fixtures::square(2);  // 9 vertices, all used
+  for (Point3& v : in.mesh.vertices) v = v + far;
+  in.mesh.vertices.push_back(Point3(9, 9, 9) + far);  // used by no face
+  const std::size_t n = in.mesh.vertices.size();
+  in.vertex_attributes.names = {"intensity"};
+  in.vertex_attributes.scalars.resize(1);
+  for (std::size_t v = 0; v < n; ++v) {
+    in.vertex_attributes.colours.push_back({static_cast<std::uint8_t>(10 * v), 0, 255});
+    in.vertex_attributes.scalars[0].push_back(static_cast<float>(v));
+  }
+  const TriangleMesh input_mesh = in.mesh;
+  const auto prepared = input::prepare_mesh(std::move(in));
+  ASSERT_NE(prepared.origin, CGAL::NULL_VECTOR);
+  ASSERT_EQ(prepared.attribute_points.size(), n - 1);
+  ASSERT_EQ(prepared.attributes.colours.size(), n - 1);
+  ASSERT_EQ(prepared.attributes.scalars.size(), 1u);
+  EXPECT_EQ(prepared.attributes.names, std::vector<std::string>{"intensity"});
+  for (std::size_t i = 0; i < n - 1; ++i) {
+    const std::size_t v = static_cast<std::size_t>(prepared.attributes.scalars[0][i]);
+    EXPECT_EQ(prepared.attributes.colours[i][0], 10 * v);
+    EXPECT_LT(CGAL::squared_distance(prepared.attribute_points[i] + prepared.origin, input_mesh.vertices[v]), 1e-12);
+  }
+}
+
 TEST(PrepareMesh, refusals_start_with_the_inputs_name) {
   input::InputOptions options;
   options.name = "m.off";
-  expect_refusal<InvalidInput>([&] { input::prepare_mesh({}, options); },
+  expect_refusal<InvalidInput>([&] { input::prepare_mesh(TriangleMesh{}, options); },
                   "m.off: the mesh has no faces");
   TriangleMesh twice;
   twice.vertices = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
@@ -98,6 +127,15 @@ TEST(PrepareMesh, refusals_start_with_the_inputs_name) {
   fin.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
   expect_refusal<input::NotASurface>([&] { input::prepare_mesh(fin, options); },
                   "m.off: edge (0, 1) has 3 faces: the mesh is not a surface");
+  input::MeshInput short_colours{fixtures::square(1), {}};
+  short_colours.vertex_attributes.colours.resize(3);
+  expect_refusal<InvalidInput>([&] { input::prepare_mesh(short_colours, options); },
+                  "m.off: the vertex colours number 3 for 4 vertices");
+  input::MeshInput long_scalars{fixtures::square(1), {}};
+  long_scalars.vertex_attributes.names = {"intensity"};
+  long_scalars.vertex_attributes.scalars = {std::vector<float>(5, 1.0F)};
+  expect_refusal<InvalidInput>([&] { input::prepare_mesh(long_scalars, options); },
+                  "m.off: the vertex values of 'intensity' number 5 for 4 vertices");
 }
 
 }  // namespace
