@@ -339,6 +339,12 @@ def run_envcrust(args, points, out_dir, truth_topo):
                                                   "cut_notches_closed")}
     result["kept"] = ("power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
                       "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
+    # What the output is: the input points meshed along the sheet, or the sheet (or the Power
+    # Crust) remeshed at the input's resolution, or as extracted.
+    meshing, remesh = j.get("sample_meshing"), j.get("remesh", {})
+    result["output"] = ("samples" if meshing and meshing.get("is_kept") else
+                        "remeshed" if remesh.get("is_remeshed") else "extracted")
+    result["remesh_seconds"] = remesh.get("seconds")
     result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
     if not args.keep_meshes:
         os.remove(out) if os.path.exists(out) else None
@@ -363,6 +369,12 @@ def run_afsr(args, points, out_dir, truth_topo):
     if j["faces"] == 0:
         result["error"] = "no faces"
         return result
+    # What the output is: the input points meshed along the sheet, or the sheet (or the Power
+    # Crust) remeshed at the input's resolution, or as extracted.
+    meshing, remesh = j.get("sample_meshing"), j.get("remesh", {})
+    result["output"] = ("samples" if meshing and meshing.get("is_kept") else
+                        "remeshed" if remesh.get("is_remeshed") else "extracted")
+    result["remesh_seconds"] = remesh.get("seconds")
     result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
     if not args.keep_meshes:
         os.remove(out) if os.path.exists(out) else None
@@ -413,6 +425,8 @@ def tool_cells(r, raw=False):
         defects = f"{s.get('orientation_seams')} / {s.get('handle_balls')} / {s.get('self_intersections_found')}"
         if r.get("kept") != "uniform":
             defects += f" ({r.get('kept')})"
+        if r.get("output") and r.get("output") != "samples":
+            defects += f", output {r['output']}"
         if r.get("own_checks_failed"):
             checks = r["own_checks_failed"].split("fails its checks: ")[-1].split("; ")
             defects += " [fails own checks: " + checks[0] + (f"; +{len(checks) - 1} more" if len(checks) > 1 else "") + "]"
