@@ -91,8 +91,11 @@ for r in "${readers[@]}"; do
   log="$logs/$r.log"
   status=0
   reader_start=$(date +%s)
-  # -timeout: one input over 10 s is a hang; -rss_limit_mb also caps a single allocation.
-  nice -n 10 "$build/fuzz/${r}_fuzz" "${limits[@]}" -timeout=10 -rss_limit_mb=2048 \
+  # -timeout: one input over 10 s is a hang (libFuzzer counts wall time: on a machine busy
+  # with other work a reader under nice can be starved past that on an input it runs in 0.2 s,
+  # so long runs beside other jobs raise it with ENVCRUST_FUZZ_TIMEOUT); -rss_limit_mb also
+  # caps a single allocation.
+  nice -n 10 "$build/fuzz/${r}_fuzz" "${limits[@]}" -timeout="${ENVCRUST_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
     -dict="$dict" -artifact_prefix="$crashes/$r/" -print_final_stats=1 "$work/$r" >"$log" 2>&1 || status=$?
   executed=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
