@@ -339,8 +339,8 @@ def run_envcrust(args, points, out_dir, truth_topo):
                                                   "cut_notches_closed")}
     result["kept"] = ("power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
                       "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
-    # What the output is: the input points meshed along the sheet, or the sheet (or the Power
-    # Crust) remeshed at the input's resolution, or as extracted.
+    # What the output is: the input points meshed along the sheet, the result remeshed
+    # (--remesh in --envcrust-args), or the sheet or Power Crust as extracted.
     meshing, remesh = j.get("sample_meshing"), j.get("remesh", {})
     result["output"] = ("samples" if meshing and meshing.get("is_kept") else
                         "remeshed" if remesh.get("is_remeshed") else "extracted")
@@ -369,12 +369,6 @@ def run_afsr(args, points, out_dir, truth_topo):
     if j["faces"] == 0:
         result["error"] = "no faces"
         return result
-    # What the output is: the input points meshed along the sheet, or the sheet (or the Power
-    # Crust) remeshed at the input's resolution, or as extracted.
-    meshing, remesh = j.get("sample_meshing"), j.get("remesh", {})
-    result["output"] = ("samples" if meshing and meshing.get("is_kept") else
-                        "remeshed" if remesh.get("is_remeshed") else "extracted")
-    result["remesh_seconds"] = remesh.get("seconds")
     result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
     if not args.keep_meshes:
         os.remove(out) if os.path.exists(out) else None
