@@ -339,12 +339,15 @@ def run_envcrust(args, points, out_dir, truth_topo):
                                                   "cut_notches_closed")}
     result["kept"] = ("power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
                       "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
-    # What the output is: the input points meshed along the sheet, the result remeshed
-    # (--remesh in --envcrust-args), or the sheet or Power Crust as extracted.
-    meshing, remesh = j.get("sample_meshing"), j.get("remesh", {})
+    # What the output is: the input points meshed along the sheet, the sheet or Power Crust
+    # simplified to the samples' resolution, the result remeshed (--remesh in
+    # --envcrust-args), or the sheet or Power Crust as extracted.
+    meshing, remesh, simplify = j.get("sample_meshing"), j.get("remesh", {}), j.get("simplify", {})
     result["output"] = ("samples" if meshing and meshing.get("is_kept") else
+                        "simplified" if simplify.get("is_simplified") else
                         "remeshed" if remesh.get("is_remeshed") else "extracted")
     result["remesh_seconds"] = remesh.get("seconds")
+    result["simplify_seconds"] = simplify.get("seconds")
     result.update(analyze(args.envcrust, out, args.truth_of[points], args.timeout))
     if not args.keep_meshes:
         os.remove(out) if os.path.exists(out) else None

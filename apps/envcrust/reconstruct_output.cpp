@@ -95,7 +95,8 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
   j["seconds"] = {{"envelope", result.seconds.envelope},
                   {"power_crust", result.seconds.power_crust},
                   {"extraction", result.seconds.extraction},
-                  {"remesh", result.seconds.remesh}};
+                  {"remesh", result.seconds.remesh},
+                  {"simplify", result.seconds.simplify}};
   if (const auto &retry = result.adaptive_retry) {
     j["adaptive_retry"] = {
         {"max_genus", retry->max_genus ? nlohmann::json(*retry->max_genus) : nlohmann::json(nullptr)},
@@ -180,6 +181,12 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
                            {"median_offset_rel_spacing", m->stats.median_offset_rel_spacing},
                            {"seconds", m->stats.seconds}};
   }
+  if (const auto &s = result.simplify_stats) {
+    j["simplify"] = {{"is_simplified", s->is_simplified},
+                     {"vertices_before", s->vertices_before},
+                     {"vertices_after", s->vertices_after},
+                     {"seconds", s->seconds}};
+  }
   if (result.envelope_crust) {
     const auto crust = topology::analyze_topology(*result.envelope_crust);
     j["envelope_crust"] = {{"faces", crust.faces},
@@ -225,9 +232,14 @@ void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &resu
           << m->stats.holes_filled << " holes closed, " << m->stats.samples_moved
           << " samples moved towards the sheet, " << m->stats.samples_left_out << " left out as off it), "
           << m->stats.seconds << " s\n";
-    else
-      out << "  output: the sheet (the samples meshed along it have " << m->samples_topology << ", the sheet "
-          << m->sheet_topology << ")\n";
+    else {
+      out << "  output: the sheet";
+      if (const auto &s = result.simplify_stats; s && s->is_simplified)
+        out << ", simplified from " << s->vertices_before << " to " << s->vertices_after << " vertices in "
+            << s->seconds << " s";
+      out << " (the samples meshed along it have " << m->samples_topology << ", the sheet " << m->sheet_topology
+          << ")\n";
+    }
   }
   if (const auto &s = result.remesh_stats; s && s->is_remeshed)
     out << "  remesh: " << s->faces_before << " -> " << s->faces_after << " faces (target edge "

@@ -45,8 +45,10 @@ struct ReconstructOptions {
   /// Mesh the samples themselves along the extracted sheet (interpolate::mesh_samples) and
   /// keep that mesh in place of the sheet when its topology is the sheet's: the same Euler
   /// characteristic, border loops, pieces and orientability, a manifold. The output then has
-  /// the input's resolution and the envelope's topology (ReconstructResult::sample_meshing).
-  /// Method::Envelope with Extraction::Sheet, without remeshing. nullopt: the sheet itself.
+  /// the input's resolution and the envelope's topology (ReconstructResult::sample_meshing);
+  /// otherwise the sheet is simplified to about as many vertices as there are samples
+  /// (ReconstructResult::simplify_stats). Method::Envelope with Extraction::Sheet, without
+  /// remeshing. nullopt: the sheet itself.
   std::optional<interpolate::InterpolateOptions> mesh_samples;
   /// Check a uniform-rho run (Method::Envelope, Extraction::Sheet) and, when it fails, run
   /// again with adaptive rho (small where M is thin, large where it is sparse) and keep the
@@ -165,7 +167,7 @@ struct PowerCrustFallback {
 
 /// Seconds spent per stage.
 struct StageTimes {
-  double envelope = 0, power_crust = 0, extraction = 0, remesh = 0;
+  double envelope = 0, power_crust = 0, extraction = 0, remesh = 0, simplify = 0;
 };
 
 /// What became of the samples' mesh (ReconstructOptions::mesh_samples).
@@ -187,6 +189,9 @@ struct ReconstructResult {
   std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
   std::optional<PowerCrustFallback> power_crust_fallback;  ///< set when the fallback ran
   std::optional<SampleMeshing> sample_meshing;  ///< set when the samples were meshed
+  /// Set when the samples' mesh was not kept: the sheet (or Power Crust) simplified to about
+  /// the samples' number of vertices (remesh::simplify), unless that folded it through itself.
+  std::optional<remesh::SimplifyStats> simplify_stats;
   /// The method whose result `mesh` is: options.method, or PowerCrust when the fallback's run
   /// was kept (then `envelope` and `sheet_stats` describe the envelope run it replaced).
   Method method = Method::Envelope;

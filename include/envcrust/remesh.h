@@ -83,6 +83,38 @@ struct RemeshResult {
 /// @throws InvalidInput when a face index is out of range.
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options = {});
 
+/// Options of simplify.
+struct SimplifyOptions {
+  std::size_t target_vertices = 0;  ///< about this many vertices are left, > 0
+};
+
+/// What simplify did.
+struct SimplifyStats {
+  bool is_simplified = false;  ///< false: the input came back unchanged (see warnings)
+  std::size_t vertices_before = 0, vertices_after = 0;
+  double seconds = 0.0;
+};
+
+/// The simplified mesh.
+struct SimplifyResult {
+  TriangleMesh mesh;
+  SimplifyStats stats;
+  std::vector<std::string> warnings;
+};
+
+/// Simplify a manifold triangle mesh to about `target_vertices` vertices by edge collapse,
+/// least quadric error first (Garland and Heckbert: each collapse goes to the point nearest,
+/// in squared distance, to the planes of the faces merged so far, so vertices go on flat parts
+/// and stay at tips, creases and the border's turns). Collapses keep the topology (CGAL's link
+/// condition), no face turns by more than 90 degrees, and border vertices stay on the
+/// border's polyline. The mesh is collapsed as one piece, on one core. A non-orientable mesh is cut open along its orientation seam, which
+/// keeps its vertices, and welded back (as in remesh). A mesh with no more vertices than the
+/// target comes back unchanged, without a warning; one that remesh would skip (not a manifold,
+/// degenerate or duplicate faces, repeated vertices) comes back unchanged with that warning, as
+/// does a result whose topology changed.
+/// @throws InvalidOptions when target_vertices is 0.
+SimplifyResult simplify(const TriangleMesh& mesh, const SimplifyOptions& options);
+
 /// Smallest interior angle over all non-degenerate triangles, in degrees (0 for no triangle).
 double min_angle_deg(const TriangleMesh& mesh);
 

@@ -81,6 +81,37 @@ void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples&
   progress.report("mesh samples", 1.0);
 }
 
+// The sheet (or the Power Crust that replaced it) where the samples' mesh was not kept:
+// simplified to about as many vertices as there are samples. As extracted it has ten to
+// forty times as many (Voronoi vertices, several per envelope sample); a user asked for a
+// surface at the resolution of the points given. The simplification keeps the topology
+// (remesh::simplify undoes itself otherwise); it is also undone when the simplified surface
+// passes through itself where the extracted one did not (a collapse that folds a thin part).
+void simplify_to_samples(ReconstructResult& out, std::size_t samples, const Progress& progress) {
+  if (out.mesh.triangles.empty() || samples == 0) return;
+  progress.report("simplify", 0.0);
+  remesh::SimplifyResult r = remesh::simplify(out.mesh, {.target_vertices = samples});
+  out.simplify_stats = r.stats;
+  out.seconds.simplify = r.stats.seconds;
+  for (auto& w : r.warnings) out.warnings.push_back(std::move(w));
+  if (r.stats.is_simplified) {
+    const std::size_t crossings = mesh::self_intersections(r.mesh, 0).face_pairs;
+    const std::size_t before = crossings > 0 ? mesh::self_intersections(out.mesh, 0).face_pairs : 0;
+    if (crossings > before) {
+      out.simplify_stats->is_simplified = false;
+      out.simplify_stats->vertices_after = out.mesh.vertices.size();
+      out.warnings.push_back("the surface simplified to the samples' resolution passed through itself (" +
+                             std::to_string(crossings) + " pairs of faces, against " + std::to_string(before) +
+                             " before): the output is the surface as extracted, " +
+                             std::to_string(out.mesh.vertices.size()) + " vertices");
+    } else {
+      out.mesh = std::move(r.mesh);
+      out.topology.reset();  // the same numbers, but on other vertices
+    }
+  }
+  progress.report("simplify", 1.0);
+}
+
 }  // namespace
 
 TriangleMesh power_shape_mesh(const powercrust::PowerCrustResult& result) {
@@ -434,8 +465,10 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   }
   // The Power Crust's surface, where it replaced the sheet, guides the samples' mesh as well:
   // it too lies on the samples, ten times as finely.
-  if (options.mesh_samples && !options.remesh && is_sheet_run)
+  if (options.mesh_samples && !options.remesh && is_sheet_run) {
     mesh_samples_result(out, samples, *options.mesh_samples, progress);
+    if (!out.sample_meshing || !out.sample_meshing->is_kept) simplify_to_samples(out, samples.points.size(), progress);
+  }
   remesh_result(out, options.remesh, progress);
   if (options.use_normal_orientation && out.method == Method::Envelope && is_sheet_run)
     topology::orient_along_normals(out.mesh, samples.points, samples.normals);

@@ -1,5 +1,5 @@
-// collapse_short_edges: CGAL's edge collapse with length cost, midpoint placement kept on
-// the border and off fixed vertices, and a bound on the normal change; pieces of the mesh in
+// collapse_edges: CGAL's edge collapse with length or quadric cost, the placement kept on the
+// border and off fixed vertices, and a bound on the normal change; pieces of the mesh in
 // parallel, merged at the vertices they share.
 #include "collapse.h"
 
@@ -8,8 +8,10 @@
 #include "envcrust/mesh_graph.h"
 
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_ratio_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_cost.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <boost/optional.hpp>
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
+#include <utility>
 
 namespace envcrust::remesh {
 namespace {
@@ -44,7 +47,15 @@ double border_turn(const SurfaceMesh& mesh, SurfaceMesh::Vertex_index v) {
   return norms > 0 ? 1.0 - in * out / norms : 0.0;
 }
 
-// Where an edge collapses to: its midpoint, inside; onto an endpoint at the border, so that
+// The midpoint of an edge: where a shortest-first collapse puts it.
+struct MidpointOf {
+  template <typename Profile>
+  boost::optional<typename Profile::Point> operator()(const Profile& profile) const {
+    return CGAL::midpoint(profile.p0(), profile.p1());
+  }
+};
+
+// Where an edge collapses to: the inner placement's point, inside; onto an endpoint at the border, so that
 // every border vertex left stays where it was (on the border polyline): a border edge onto
 // the endpoint where the border turns more, unless the border edge that replaces it would be
 // longer than max_border_edge (remeshing splits border edges at their midpoints, which are
@@ -52,10 +63,11 @@ double border_turn(const SurfaceMesh& mesh, SurfaceMesh::Vertex_index v) {
 // endpoint onto that one. Nowhere if an endpoint is fixed, or if both are on the border and
 // the edge is not (collapsing that chord would pinch the surface), or (Frozen) if either is
 // on the border.
+template <typename InnerPlacement>
 class BorderAwarePlacement {
  public:
-  BorderAwarePlacement(FixedMap fixed, BorderCollapse border, double max_border_edge)
-      : fixed_(fixed), border_(border), max_border_edge2_(max_border_edge * max_border_edge) {}
+  BorderAwarePlacement(InnerPlacement inner, FixedMap fixed, BorderCollapse border, double max_border_edge)
+      : inner_(std::move(inner)), fixed_(fixed), border_(border), max_border_edge2_(max_border_edge * max_border_edge) {}
 
   template <typename Profile>
   boost::optional<typename Profile::Point> operator()(const Profile& profile) const {
@@ -75,10 +87,11 @@ class BorderAwarePlacement {
     }
     if (b0) return profile.p0();
     if (b1) return profile.p1();
-    return CGAL::midpoint(profile.p0(), profile.p1());
+    return inner_(profile);
   }
 
  private:
+  InnerPlacement inner_;
   FixedMap fixed_;
   BorderCollapse border_;
   double max_border_edge2_;
@@ -86,18 +99,30 @@ class BorderAwarePlacement {
 
 // Collapse one Surface_mesh in place (see collapse.h).
 void collapse_in_place(SurfaceMesh& mesh, FixedMap fixed, const CollapseOptions& options) {
-  const SMS::Edge_length_stop_predicate<double> stop(options.max_length);
   // The normal check is a filter, run once per collapse; as a placement it would also run
   // each time a neighbour's cost is updated (measured: 37 s for the bunny's 1.8M faces).
   // Edges at fixed vertices are also marked constrained: CGAL collapses edges of length zero
   // without asking the placement, unless they are constrained.
   auto at_fixed = mesh.add_property_map<SurfaceMesh::Edge_index, bool>("e:envcrust_at_fixed", false).first;
   for (const auto e : mesh.edges()) at_fixed[e] = fixed[mesh.vertex(e, 0)] || fixed[mesh.vertex(e, 1)];
-  SMS::edge_collapse(mesh, stop,
-                     CGAL::parameters::get_cost(SMS::Edge_length_cost<SurfaceMesh>())
-                         .get_placement(BorderAwarePlacement(fixed, options.border, options.max_border_edge))
-                         .filter(SMS::Bounded_normal_change_filter<>())
-                         .edge_is_constrained_map(at_fixed));
+  if (options.order == CollapseOrder::ShortestFirst) {
+    SMS::edge_collapse(mesh, SMS::Edge_length_stop_predicate<double>(options.max_length),
+                       CGAL::parameters::get_cost(SMS::Edge_length_cost<SurfaceMesh>())
+                           .get_placement(BorderAwarePlacement(MidpointOf{}, fixed, options.border,
+                                                               options.max_border_edge))
+                           .filter(SMS::Bounded_normal_change_filter<>())
+                           .edge_is_constrained_map(at_fixed));
+  } else {
+    // The policies hold the vertices' quadrics; the cost evaluates them at whatever point the
+    // placement chose, so a border endpoint is charged for the error it leaves.
+    SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel> quadrics(mesh);
+    SMS::edge_collapse(mesh, SMS::Count_ratio_stop_predicate<SurfaceMesh>(options.keep_edge_fraction),
+                       CGAL::parameters::get_cost(quadrics.get_cost())
+                           .get_placement(BorderAwarePlacement(quadrics.get_placement(), fixed, options.border,
+                                                               options.max_border_edge))
+                           .filter(SMS::Bounded_normal_change_filter<>())
+                           .edge_is_constrained_map(at_fixed));
+  }
   mesh.remove_property_map(at_fixed);
   mesh.collect_garbage();
 }
@@ -161,8 +186,7 @@ SurfaceMesh to_halfedge_mesh(const TriangleMesh& mesh) {
   return sm;
 }
 
-Collapsed collapse_short_edges(const TriangleMesh& mesh, const std::vector<char>& fixed,
-                               const CollapseOptions& options) {
+Collapsed collapse_edges(const TriangleMesh& mesh, const std::vector<char>& fixed, const CollapseOptions& options) {
   const mesh::SpatiallyOrdered ordered = mesh::order_spatially(mesh);
   const std::size_t face_count = ordered.mesh.triangles.size();
   const std::size_t piece_count =
@@ -239,6 +263,23 @@ Collapsed collapse_short_edges(const TriangleMesh& mesh, const std::vector<char>
     for (const auto& t : piece.mesh.triangles) out.mesh.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
   }
   return out;
+}
+
+void collapse_cut_mesh(CutMesh& cut, const CollapseOptions& options) {
+  std::vector<char> fixed(cut.on_seam.begin(), cut.on_seam.end());
+  Collapsed collapsed = collapse_edges(cut.mesh, fixed, options);
+  std::vector<bool> on_seam(collapsed.mesh.vertices.size(), false);
+  std::vector<Index> weld_key(collapsed.mesh.vertices.size(), kNoWeldKey);
+  for (std::size_t v = 0; v < on_seam.size(); ++v) {
+    const Index input = collapsed.input_vertex[v];
+    if (input != std::numeric_limits<Index>::max() && cut.on_seam[input]) {
+      on_seam[v] = true;
+      weld_key[v] = cut.weld_key[input];
+    }
+  }
+  cut.mesh = std::move(collapsed.mesh);
+  cut.on_seam = std::move(on_seam);
+  cut.weld_key = std::move(weld_key);
 }
 
 }  // namespace envcrust::remesh

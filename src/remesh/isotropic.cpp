@@ -54,27 +54,14 @@ Built to_surface_mesh(const CutMesh& cut) {
 // What one remeshing round does to the true border: as the BoundaryMode says, or nothing.
 enum class Border { Resample, Keep, Fixed };
 
-// The cut mesh with its short edges collapsed (collapse.h), the seam fixed and its vertices'
-// marks and keys carried over (vertices that moved have no key; only seam keys are read).
-void collapse_cut_mesh(CutMesh& cut, double target_edge_length, Border border_mode) {
-  std::vector<char> fixed(cut.on_seam.begin(), cut.on_seam.end());
+// The cut mesh with its edges shorter than 0.8 of the target collapsed (collapse.h), the
+// border kept on its polyline or frozen as the mode says.
+void collapse_short_edges(CutMesh& cut, double target_edge_length, Border border_mode) {
   CollapseOptions options;
   options.max_length = 0.8 * target_edge_length;
   options.max_border_edge = 4.0 / 3.0 * target_edge_length;
   options.border = border_mode == Border::Resample ? BorderCollapse::AlongBorder : BorderCollapse::Frozen;
-  Collapsed collapsed = collapse_short_edges(cut.mesh, fixed, options);
-  std::vector<bool> on_seam(collapsed.mesh.vertices.size(), false);
-  std::vector<Index> weld_key(collapsed.mesh.vertices.size(), kNoWeldKey);
-  for (std::size_t v = 0; v < on_seam.size(); ++v) {
-    const Index input = collapsed.input_vertex[v];
-    if (input != std::numeric_limits<Index>::max() && cut.on_seam[input]) {
-      on_seam[v] = true;
-      weld_key[v] = cut.weld_key[input];
-    }
-  }
-  cut.mesh = std::move(collapsed.mesh);
-  cut.on_seam = std::move(on_seam);
-  cut.weld_key = std::move(weld_key);
+  collapse_cut_mesh(cut, options);
 }
 
 // A remeshed mesh, welded, and its faces at the seam it was cut along (none for an empty
@@ -150,7 +137,7 @@ Remeshed remesh_cut_open(const TriangleMesh& mesh, const std::vector<std::uint32
   // took 38 s; in 8 pieces on 2 cores the whole stage takes 20 s).
   // Remeshing then projects onto the input, not onto the collapsed mesh. (A later round,
   // Border::Fixed, starts from a remeshed mesh.)
-  if (border_mode != Border::Fixed) collapse_cut_mesh(cut, target_edge_length, border_mode);
+  if (border_mode != Border::Fixed) collapse_short_edges(cut, target_edge_length, border_mode);
   Built b = to_surface_mesh(cut);
   SurfaceMesh& sm = b.sm;
   auto constrained = sm.add_property_map<SurfaceMesh::Vertex_index, bool>("v:envcrust_constrained", false).first;

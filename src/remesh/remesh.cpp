@@ -4,6 +4,7 @@
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
 #include "envcrust/topology.h"
+#include "fitness.h"
 #include "isotropic.h"
 
 #include <CGAL/exceptions.h>
@@ -31,15 +32,6 @@ void validate(const RemeshOptions& o) {
   if (!(std::isfinite(o.max_face_growth) && o.max_face_growth >= 1)) fail("max_face_growth", ">= 1", o.max_face_growth);
 }
 
-// The numbers remeshing must not change, as "chi 0, 1 component, 2 loops, orientable".
-std::string describe(const topology::MeshTopology& t) {
-  std::ostringstream s;
-  s << "chi " << t.euler_characteristic << ", " << t.components.size() << " component(s), "
-    << t.boundary_loops.size() << " boundary loop(s), " << (t.is_orientable ? "orientable" : "non-orientable")
-    << (t.is_manifold() ? "" : ", non-manifold");
-  return s.str();
-}
-
 }  // namespace
 
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options) {
@@ -56,13 +48,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options) {
   };
 
   const auto before = topology::analyze_topology(mesh);
-  if (before.faces == 0) return finish("remeshing skipped: the mesh has no triangles");
-  if (!before.is_manifold())
-    return finish("remeshing skipped: the mesh is not a manifold (" + std::to_string(before.non_manifold_edges) +
-                  " non-manifold edges, " + std::to_string(before.non_manifold_vertices) +
-                  " non-manifold vertices)");
-  if (before.degenerate_faces + before.duplicate_faces + before.welded_vertices > 0)
-    return finish("remeshing skipped: the mesh has degenerate or duplicate faces or repeated vertices");
+  if (const std::string why = unfit_reason(before); !why.empty()) return finish("remeshing skipped: " + why);
 
   const double target = options.target_edge_length.value_or(options.edge_length_rel_median * median_edge_length(mesh));
   out.stats.target_edge_length = target;
@@ -86,11 +72,8 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options) {
   } catch (const CGAL::Failure_exception& e) {
     return finish("remeshing skipped: CGAL failed (" + e.message() + ")");
   }
-  const auto after = topology::analyze_topology(remeshed);
-  if (describe(after) != describe(before) || after.degenerate_faces > 0)
-    return finish("remeshing undone: it changed the mesh from " + describe(before) + " to " + describe(after) +
-                  (after.degenerate_faces > 0 ? " with " + std::to_string(after.degenerate_faces) + " degenerate faces"
-                                              : std::string()));
+  if (const std::string change = topology_change(before, topology::analyze_topology(remeshed)); !change.empty())
+    return finish("remeshing undone: " + change);
   out.mesh = std::move(remeshed);
   out.stats.is_remeshed = true;
   out.stats.faces_after = out.mesh.triangles.size();

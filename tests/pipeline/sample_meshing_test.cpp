@@ -34,16 +34,24 @@ TEST(SampleMeshing, hemisphere_comes_out_on_its_own_samples) {
   EXPECT_EQ(t.boundary_loops.size(), 1u);
 }
 
-TEST(SampleMeshing, moebius_strip_keeps_its_non_orientable_sheet) {
+// An advancing front cannot make a Moebius band: the sheet stays, simplified to about as many
+// vertices as there are samples (as extracted it has several times as many).
+TEST(SampleMeshing, moebius_strip_keeps_its_non_orientable_sheet_at_the_samples_resolution) {
   const auto samples = fixtures::builtin_samples("moebius", 3000);
   const auto result = pipeline::reconstruct(samples, with_sample_meshing());
   ASSERT_TRUE(result.sample_meshing.has_value());
   EXPECT_FALSE(result.sample_meshing->is_kept);
   EXPECT_EQ(result.sample_meshing->sheet_topology, "chi 0, 1 loop, 1 piece, non-orientable");
+  ASSERT_TRUE(result.simplify_stats.has_value());
+  EXPECT_TRUE(result.simplify_stats->is_simplified) << (result.warnings.empty() ? "" : result.warnings.back());
+  EXPECT_GT(result.simplify_stats->vertices_before, 3 * samples.points.size());
   const auto t = topology::analyze_topology(result.mesh);
+  EXPECT_TRUE(t.is_manifold());
   EXPECT_FALSE(t.is_orientable);
+  EXPECT_EQ(t.euler_characteristic, 0);
   EXPECT_EQ(t.boundary_loops.size(), 1u);
-  EXPECT_GT(result.mesh.vertices.size(), samples.points.size());  // the sheet's own vertices
+  EXPECT_GT(2 * result.mesh.vertices.size(), samples.points.size());
+  EXPECT_LT(result.mesh.vertices.size(), 2 * samples.points.size());
 }
 
 TEST(SampleMeshing, is_the_default_for_files_and_gives_way_to_remeshing) {

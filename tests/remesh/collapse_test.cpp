@@ -1,4 +1,4 @@
-// collapse_short_edges: pieces collapsed in parallel come back as one mesh with the input's
+// collapse_edges: pieces collapsed in parallel come back as one mesh with the input's
 // topology, shared vertices once, border and fixed vertices where they were.
 #include "collapse.h"
 
@@ -43,7 +43,7 @@ TEST(CollapseShortEdges, pieces_come_back_as_one_mesh_with_the_inputs_topology) 
   options.max_border_edge = 0.05;
   for (const std::size_t per_piece : {std::size_t{1000000}, std::size_t{3000}, std::size_t{1000}, std::size_t{1}}) {
     options.faces_per_piece = per_piece;  // 1, 9, 28 and 64 pieces (at most)
-    const auto out = remesh::collapse_short_edges(grid, fixed, options);
+    const auto out = remesh::collapse_edges(grid, fixed, options);
     SCOPED_TRACE(per_piece);
     // The bands along the pieces' shared vertices stay fine (the remeshing takes them on).
     EXPECT_LT((per_piece > grid.triangles.size() ? 4 : 1) * out.mesh.triangles.size(), grid.triangles.size());
@@ -73,10 +73,10 @@ TEST(CollapseShortEdges, result_does_not_depend_on_the_thread_schedule) {
   options.faces_per_piece = 1500;
   const TriangleMesh torus = fixtures::torus(200, 80);
   const std::vector<char> none(torus.vertices.size(), 0);
-  const auto first = remesh::collapse_short_edges(torus, none, options);
+  const auto first = remesh::collapse_edges(torus, none, options);
   expect_same_topology(torus, first.mesh);
   for (int run = 0; run < 3; ++run) {
-    const auto again = remesh::collapse_short_edges(torus, none, options);
+    const auto again = remesh::collapse_edges(torus, none, options);
     EXPECT_EQ(again.mesh.vertices, first.mesh.vertices);
     EXPECT_EQ(again.mesh.triangles, first.mesh.triangles);
   }
@@ -89,7 +89,7 @@ TEST(CollapseShortEdges, refuses_faces_that_are_no_halfedge_mesh) {
   remesh::CollapseOptions options;
   options.max_length = 0.1;
   try {
-    (void)remesh::collapse_short_edges(m, fixed, options);
+    (void)remesh::collapse_edges(m, fixed, options);
     FAIL() << "no exception";
   } catch (const NumericalFailure& e) {
     EXPECT_STREQ(e.what(), "remeshing: the faces cannot be oriented into a halfedge mesh");
