@@ -185,6 +185,7 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
     j["simplify"] = {{"is_simplified", s->is_simplified},
                      {"vertices_before", s->vertices_before},
                      {"vertices_after", s->vertices_after},
+                     {"vertices_held", s->vertices_held},
                      {"seconds", s->seconds}};
   }
   if (result.envelope_crust) {

@@ -83,6 +83,10 @@ struct RemeshResult {
 /// @throws InvalidInput when a face index is out of range.
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshOptions& options = {});
 
+/// How many times simplify runs at most, each holding more of the input where the previous
+/// run passed through itself.
+inline constexpr int kSimplifyRounds = 3;
+
 /// Options of simplify.
 struct SimplifyOptions {
   std::size_t target_vertices = 0;  ///< about this many vertices are left, > 0
@@ -92,6 +96,8 @@ struct SimplifyOptions {
 struct SimplifyStats {
   bool is_simplified = false;  ///< false: the input came back unchanged (see warnings)
   std::size_t vertices_before = 0, vertices_after = 0;
+  /// Input vertices held in place where an earlier round passed through itself.
+  std::size_t vertices_held = 0;
   double seconds = 0.0;
 };
 
@@ -107,7 +113,11 @@ struct SimplifyResult {
 /// in squared distance, to the planes of the faces merged so far, so vertices go on flat parts
 /// and stay at tips, creases and the border's turns). Collapses keep the topology (CGAL's link
 /// condition), no face turns by more than 90 degrees, and border vertices stay on the
-/// border's polyline. The mesh is collapsed as one piece, on one core. A non-orientable mesh is cut open along its orientation seam, which
+/// border's polyline. The mesh is collapsed as one piece, on one core. Where the result
+/// passes through itself at more pairs of faces than the input, the input's vertices within
+/// twice the longest edge of each crossing face are held in place and the whole is simplified
+/// again, up to kSimplifyRounds times; a result that still crosses more than the input is
+/// undone, with a warning. A non-orientable mesh is cut open along its orientation seam, which
 /// keeps its vertices, and welded back (as in remesh). A mesh with no more vertices than the
 /// target comes back unchanged, without a warning; one that remesh would skip (not a manifold,
 /// degenerate or duplicate faces, repeated vertices) comes back unchanged with that warning, as

@@ -84,9 +84,8 @@ void mesh_samples_result(ReconstructResult& out, const envelope::SurfaceSamples&
 // The sheet (or the Power Crust that replaced it) where the samples' mesh was not kept:
 // simplified to about as many vertices as there are samples. As extracted it has ten to
 // forty times as many (Voronoi vertices, several per envelope sample); a user asked for a
-// surface at the resolution of the points given. The simplification keeps the topology
-// (remesh::simplify undoes itself otherwise); it is also undone when the simplified surface
-// passes through itself where the extracted one did not (a collapse that folds a thin part).
+// surface at the resolution of the points given. remesh::simplify keeps the topology and
+// passes through itself nowhere the sheet does not, or gives the sheet back.
 void simplify_to_samples(ReconstructResult& out, std::size_t samples, const Progress& progress) {
   if (out.mesh.triangles.empty() || samples == 0) return;
   progress.report("simplify", 0.0);
@@ -95,19 +94,8 @@ void simplify_to_samples(ReconstructResult& out, std::size_t samples, const Prog
   out.seconds.simplify = r.stats.seconds;
   for (auto& w : r.warnings) out.warnings.push_back(std::move(w));
   if (r.stats.is_simplified) {
-    const std::size_t crossings = mesh::self_intersections(r.mesh, 0).face_pairs;
-    const std::size_t before = crossings > 0 ? mesh::self_intersections(out.mesh, 0).face_pairs : 0;
-    if (crossings > before) {
-      out.simplify_stats->is_simplified = false;
-      out.simplify_stats->vertices_after = out.mesh.vertices.size();
-      out.warnings.push_back("the surface simplified to the samples' resolution passed through itself (" +
-                             std::to_string(crossings) + " pairs of faces, against " + std::to_string(before) +
-                             " before): the output is the surface as extracted, " +
-                             std::to_string(out.mesh.vertices.size()) + " vertices");
-    } else {
-      out.mesh = std::move(r.mesh);
-      out.topology.reset();  // the same numbers, but on other vertices
-    }
+    out.mesh = std::move(r.mesh);
+    out.topology.reset();  // the same numbers, but on other vertices
   }
   progress.report("simplify", 1.0);
 }

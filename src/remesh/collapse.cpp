@@ -265,8 +265,9 @@ Collapsed collapse_edges(const TriangleMesh& mesh, const std::vector<char>& fixe
   return out;
 }
 
-void collapse_cut_mesh(CutMesh& cut, const CollapseOptions& options) {
+void collapse_cut_mesh(CutMesh& cut, const CollapseOptions& options, const std::vector<char>& held) {
   std::vector<char> fixed(cut.on_seam.begin(), cut.on_seam.end());
+  for (std::size_t v = 0; v < std::min(held.size(), fixed.size()); ++v) fixed[v] = fixed[v] || held[v];
   Collapsed collapsed = collapse_edges(cut.mesh, fixed, options);
   std::vector<bool> on_seam(collapsed.mesh.vertices.size(), false);
   std::vector<Index> weld_key(collapsed.mesh.vertices.size(), kNoWeldKey);

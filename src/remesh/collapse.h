@@ -65,9 +65,11 @@ struct Collapsed {
 /// @throws NumericalFailure when the faces do not form a halfedge mesh.
 Collapsed collapse_edges(const TriangleMesh& mesh, const std::vector<char>& fixed, const CollapseOptions& options);
 
-/// collapse_edges on a mesh cut open along its seam, the seam's vertices fixed; the seam
-/// marks and weld keys follow the vertices that stay (vertices that moved have none).
-void collapse_cut_mesh(CutMesh& cut, const CollapseOptions& options);
+/// collapse_edges on a mesh cut open along its seam, the seam's vertices fixed, and the
+/// vertices v < held.size() with held[v] (cut vertex v < the input's vertex count is input
+/// vertex v); the seam marks and weld keys follow the vertices that stay (vertices that moved
+/// have none).
+void collapse_cut_mesh(CutMesh& cut, const CollapseOptions& options, const std::vector<char>& held = {});
 
 /// The mesh (an oriented manifold: pinched vertices are not all caught) as a CGAL
 /// Surface_mesh, vertex i being vertex i.
