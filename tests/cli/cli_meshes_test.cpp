@@ -54,6 +54,13 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   EXPECT_EQ(j["sheet"]["cut_handles_rel_rho"], 1.5);  // a scan's default; every ball is a disc here
   EXPECT_EQ(j["sheet"]["handle_balls"], 0);
   EXPECT_TRUE(j["hints"].empty()) << j["hints"].dump();
+  // An advancing front cannot make a Moebius band: the output is the sheet, simplified to
+  // about the input's number of points (the sheet has a third more here).
+  EXPECT_EQ(j["sample_meshing"]["is_kept"], false);
+  EXPECT_EQ(j["simplify"]["is_simplified"], true);
+  EXPECT_EQ(j["simplify"]["vertices_after"], a["vertices"]);
+  EXPECT_GT(j["simplify"]["vertices_before"].get<double>(), 1.2 * a["vertices"].get<double>());
+  EXPECT_LT(a["vertices"].get<double>(), 1.1 * j["input_points"].get<double>());
   // --orientable=yes overrides what the mesh says: the strip is cut across into a disc.
   const auto f = run_envcrust_json("reconstruct " + path("m.off") + " --orientable=yes -o " + path("d.ply") +
                                    " --json");
@@ -63,6 +70,7 @@ TEST_F(CliTest, reconstruct_a_moebius_mesh) {
   EXPECT_EQ(f["analysis"]["boundary_loops"], 1);
   const auto text = run_envcrust("reconstruct " + path("m.off") + " --no-analysis -o " + path("r.ply"));
   EXPECT_EQ(text.out.find("hint:"), std::string::npos) << "no analysis, no hint";
+  EXPECT_NE(text.out.find("  output: the sheet, simplified from "), std::string::npos) << text.out;
 }
 
 // Scans often repeat triangles (the face scan in ../shared/data has 18): they are dropped with
