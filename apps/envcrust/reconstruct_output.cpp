@@ -228,18 +228,20 @@ void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &resu
   if (result.sheet_stats) stage("extraction", result.seconds.extraction);
   out << "\n";
   if (const auto &m = result.sample_meshing) {
-    if (m->is_kept)
-      out << "  output: the input samples meshed along the sheet (" << m->samples_topology << "; "
-          << m->stats.holes_filled << " holes closed, " << m->stats.samples_moved
-          << " samples moved towards the sheet, " << m->stats.samples_left_out << " left out as off it), "
-          << m->stats.seconds << " s\n";
-    else {
-      out << "  output: the sheet";
+    // The surface that guided the samples' mesh: the sheet, or the Power Crust's surface
+    // where the fallback replaced it.
+    const char *guide = result.method == pipeline::Method::PowerCrust ? "the Power Crust's surface" : "the sheet";
+    if (m->is_kept) {
+      out << "  output: the input samples meshed along " << guide << " (" << m->samples_topology << "; "
+          << m->stats.holes_filled << " holes closed, " << m->stats.samples_moved << " samples moved towards "
+          << guide << ", " << m->stats.samples_left_out << " left out as off it), " << m->stats.seconds << " s\n";
+    } else {
+      out << "  output: " << guide;
       if (const auto &s = result.simplify_stats; s && s->is_simplified)
         out << ", simplified from " << s->vertices_before << " to " << s->vertices_after << " vertices in "
             << s->seconds << " s";
-      out << " (the samples meshed along it have " << m->samples_topology << ", the sheet " << m->sheet_topology
-          << ")\n";
+      out << " (the samples meshed along it have " << m->samples_topology << ", " << guide << " "
+          << m->sheet_topology << ")\n";
     }
   }
   if (const auto &s = result.remesh_stats; s && s->is_remeshed)

@@ -190,6 +190,10 @@ TEST_F(CliTest, a_result_in_more_pieces_than_its_samples_hints_at_the_direct_pow
   EXPECT_EQ(fallback["analysis"]["components"], 1);
   EXPECT_EQ(fallback["analysis"]["euler_characteristic"], 0);
   EXPECT_TRUE(fallback["hints"].empty()) << fallback["hints"];
+  // The report names the surface that guided the output: the Power Crust's, not the sheet.
+  const auto text = run_envcrust("reconstruct " + path("t.xyz") + " --no-analysis -o " + path("f.ply"));
+  EXPECT_NE(text.out.find("  output: the input samples meshed along the Power Crust's surface ("), std::string::npos)
+      << text.out;
   const auto j = run_envcrust_json("reconstruct " + path("t.xyz") + " --no-power-crust-fallback -o " + path("t.ply") +
                                    " --json");
   EXPECT_FALSE(j.contains("power_crust_fallback"));
