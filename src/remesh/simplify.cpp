@@ -1,5 +1,5 @@
-// simplify: check the mesh, cut it open along its seam, collapse by quadric error in pieces
-// and then whole, weld back, undo on a topology change.
+// simplify: check the mesh, cut it open along its seam, collapse by quadric error, weld back;
+// again with the input held where the result passes through itself; undo on a topology change.
 #include "envcrust/errors.h"
 #include "envcrust/mesh.h"
 #include "envcrust/nearest_index.h"
