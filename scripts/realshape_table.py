@@ -35,7 +35,11 @@ The scans: --scans or the environment variable ENVCRUST_SHARED_DATA (no default;
 for scan: inputs).
 
 Topology "right": the output's Euler characteristic, boundary loop count, orientability and
-number of pieces all equal the truth mesh's (as `envcrust analyze` reads both). Distances are
+number of pieces all equal the truth mesh's (as `envcrust analyze` reads both), or, where the
+truth has a hole no larger than the largest gap the points leave beside it (its boundary no
+longer than 2 pi R, R the largest distance from the truth's surface within one hole diameter of
+the boundary to its nearest input point), the truth's with each such hole filled: the points
+cannot tell it from a gap. The truth cell names those holes ("resolved: ..."). Distances are
 the largest distance output->truth and truth->output, in % of the truth's box diagonal. Time
 is the wall clock of the whole command (envcrust's includes reading, normals, its own analysis
 against the input points, and writing; afsr_peer's reading and writing); peak is the largest
@@ -296,6 +300,92 @@ def truth_topology(binary, truth, args):
     return result
 
 
+def boundary_loops(triangles):
+    """The truth's boundary loops as lists of boundary edges (vertex pairs), one list per
+    connected set of boundary edges."""
+    count = {}
+    for t in triangles:
+        for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
+            key = (a, b) if a < b else (b, a)
+            count[key] = count.get(key, 0) + 1
+    edges = [e for e, n in count.items() if n == 1]
+    parent = {}
+
+    def find(x):
+        while parent.setdefault(x, x) != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    for a, b in edges:
+        parent[find(a)] = find(b)
+    loops = {}
+    for e in edges:
+        loops.setdefault(find(e[0]), []).append(e)
+    return list(loops.values())
+
+
+def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
+    """The largest distance from the truth's surface within one hole diameter (length / pi) of a
+    boundary loop to its nearest input point: the largest gap the points leave around the hole.
+    Measured by `analyze` on that piece of the truth with the points as reference."""
+    length = sum(math.dist(vertices[a], vertices[b]) for a, b in loop)
+    reach = length / math.pi
+    rim = sorted({v for e in loop for v in e})
+    lo = [min(vertices[v][i] for v in rim) - reach for i in range(3)]
+    hi = [max(vertices[v][i] for v in rim) + reach for i in range(3)]
+
+    def near(v):
+        p = vertices[v]
+        return all(lo[i] <= p[i] <= hi[i] for i in range(3)) and \
+            min(math.dist(p, vertices[r]) for r in rim) <= reach
+    near_cache = {}
+    piece = [t for t in triangles
+             if all(near_cache.setdefault(v, near(v)) for v in t)]
+    used = sorted({v for t in piece for v in t})
+    index = {v: i for i, v in enumerate(used)}
+    path = os.path.join(work, "truth", f"{name}.hole.off")
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(used)} {len(piece)} 0\n")
+        f.writelines(f"{vertices[v][0]!r} {vertices[v][1]!r} {vertices[v][2]!r}\n" for v in used)
+        f.writelines(f"3 {index[t[0]]} {index[t[1]]} {index[t[2]]}\n" for t in piece)
+    code, out, err, _, _ = run([binary, "analyze", path, "--reference", points, "--json", "--quiet",
+                                "--no-knots", "--no-self-intersections"], timeout)
+    os.remove(path)
+    if code != 0:
+        raise ValueError(f"analyze of the piece round a hole: {err.strip()[-200:]}")
+    return length, json.loads(out)["distance"]["mesh_to_reference"]["max"]
+
+
+def sampling_resolution(binary, truth, points, key, truth_topo, args):
+    """Which of the truth's holes the points resolve. Around each hole (the truth's surface
+    within one hole diameter of its boundary) the largest gap the points leave is R, the largest
+    distance from there to the nearest input point. A hole whose boundary is no longer than
+    2 pi R, the rim of an empty disc of that radius, is no larger than a gap the points leave
+    beside it: no method can tell it from one. The topology the points resolve is the truth's
+    with each such hole filled by a disc (chi + 1, one loop fewer). OFF truths only."""
+    cache = os.path.join(args.work, "truth", key + ".resolution.json")
+    if os.path.exists(cache):
+        with open(cache) as f:
+            return json.load(f)
+    if "topology" not in truth_topo or truth_topo["topology"]["loops"] == 0 or not truth.endswith(".off"):
+        return {}
+    vertices, triangles = read_off(truth)
+    holes = []
+    for i, loop in enumerate(boundary_loops(triangles)):
+        length, gap = local_gap(binary, vertices, triangles, loop, points, args.work,
+                                f"{key}.{i}", args.timeout)
+        holes.append({"length": length, "largest_gap_around": gap, "resolved": length > 2 * math.pi * gap})
+    unresolved = sum(1 for h in holes if not h["resolved"])
+    topology = dict(truth_topo["topology"])
+    topology["chi"] += unresolved
+    topology["loops"] -= unresolved
+    result = {"holes": holes, "unresolved_holes": unresolved, "topology": topology}
+    os.makedirs(os.path.dirname(cache), exist_ok=True)
+    with open(cache, "w") as f:
+        json.dump(result, f)
+    return result
+
+
 def count_points(path):
     with open(path) as f:
         return sum(1 for line in f if line.strip() and not line.lstrip().startswith("#"))
@@ -386,12 +476,16 @@ def measure(name, args):
     args.truth_of[points] = truth
     row = {"input": name, "points_file": points, "truth": truth, "points": count_points(points),
            "truth_analysis": truth_topology(args.envcrust, truth, args)}
-    out_dir = os.path.join(args.work, "out", name.replace("/", ".").replace(":", "_"))
+    key = name.replace("/", ".").replace(":", "_")
+    row["resolution"] = sampling_resolution(args.envcrust, truth, points, key, row["truth_analysis"], args)
+    # Right: the topology the samples resolve (the truth's, unless a hole is below the sampling).
+    expected = row["resolution"].get("topology") or row["truth_analysis"].get("topology")
+    out_dir = os.path.join(args.work, "out", key)
     os.makedirs(out_dir, exist_ok=True)
     for tool, runner in (("afsr", run_afsr), ("envcrust", run_envcrust)):
         row[tool] = runner(args, points, out_dir, row["truth_analysis"])
-        if "topology" in row[tool] and "topology" in row["truth_analysis"]:
-            row[tool]["topology_right"] = row[tool]["topology"] == row["truth_analysis"]["topology"]
+        if "topology" in row[tool] and expected:
+            row[tool]["topology_right"] = row[tool]["topology"] == expected
     return row
 
 
@@ -438,6 +532,10 @@ HEADER = ("| input | points | truth | envcrust | ok | m→t | t→m | s | MB | v
 def row_text(row):
     truth = row.get("truth_analysis", {})
     truth_cell = topo_text(truth["topology"]) if "topology" in truth else truth.get("error", row.get("error", ""))
+    holes = row.get("resolution", {}).get("unresolved_holes")
+    if holes:
+        truth_cell += (f"; resolved: {topo_text(row['resolution']['topology'])} ({holes} hole"
+                       f"{'s' if holes > 1 else ''} below the sampling)")
     cells = [row["input"], f"{row.get('points', 0):,}", truth_cell] + tool_cells(row.get("envcrust"), raw=True) + \
         tool_cells(row.get("afsr"))
     return "| " + " | ".join(str(c) for c in cells) + " |"
