@@ -36,10 +36,10 @@ for scan: inputs).
 
 Topology "right": the output's Euler characteristic, boundary loop count, orientability and
 number of pieces all equal the truth mesh's (as `envcrust analyze` reads both), or, where the
-truth has a hole no larger than the largest gap the points leave beside it (its boundary no
-longer than 2 pi R, R the largest distance from the truth's surface within one hole diameter of
-the boundary to its nearest input point), the truth's with each such hole filled: the points
-cannot tell it from a gap. The truth cell names those holes ("resolved: ..."). Distances are
+truth has a hole no larger than the largest gap the points leave beside it (the disc it holds,
+of radius 2 area / length, no larger than R, the largest distance from the truth's surface
+within one hole diameter of the boundary to its nearest input point), the truth's with each
+such hole filled: the points cannot tell it from a gap. The truth cell names those holes ("resolved: ..."). Distances are
 the largest distance output->truth and truth->output, in % of the truth's box diagonal. Time
 is the wall clock of the whole command (envcrust's includes reading, normals, its own analysis
 against the input points, and writing; afsr_peer's reading and writing); peak is the largest
@@ -301,14 +301,15 @@ def truth_topology(binary, truth, args):
 
 
 def boundary_loops(triangles):
-    """The truth's boundary loops as lists of boundary edges (vertex pairs), one list per
-    connected set of boundary edges."""
-    count = {}
+    """The truth's boundary loops as lists of boundary edges (vertex pairs in their face's
+    order), one list per connected set of boundary edges."""
+    count, directed = {}, {}
     for t in triangles:
         for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
             key = (a, b) if a < b else (b, a)
             count[key] = count.get(key, 0) + 1
-    edges = [e for e, n in count.items() if n == 1]
+            directed[key] = (a, b)
+    edges = [directed[e] for e, n in count.items() if n == 1]
     parent = {}
 
     def find(x):
@@ -322,6 +323,20 @@ def boundary_loops(triangles):
     for e in edges:
         loops.setdefault(find(e[0]), []).append(e)
     return list(loops.values())
+
+
+def hole_radius(vertices, loop):
+    """The radius of the disc a hole would hold, 2 area / length: a round hole's radius, a
+    triangular one's inscribed circle, about half the width of a slot. The area is the size of
+    the loop's vector area (the hole's area where it is near planar)."""
+    ax = ay = az = 0.0
+    for a, b in loop:
+        p, q = vertices[a], vertices[b]
+        ax += p[1] * q[2] - p[2] * q[1]
+        ay += p[2] * q[0] - p[0] * q[2]
+        az += p[0] * q[1] - p[1] * q[0]
+    length = sum(math.dist(vertices[a], vertices[b]) for a, b in loop)
+    return 0.5 * math.sqrt(ax * ax + ay * ay + az * az) * 2 / length if length > 0 else 0.0
 
 
 def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
@@ -358,9 +373,9 @@ def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
 
 def sampling_resolution(binary, truth, points, key, truth_topo, args):
     """Which of the truth's holes the points resolve. Around each hole (the truth's surface
-    within one hole diameter of its boundary) the largest gap the points leave is R, the largest
-    distance from there to the nearest input point. A hole whose boundary is no longer than
-    2 pi R, the rim of an empty disc of that radius, is no larger than a gap the points leave
+    within one hole diameter, length / pi, of its boundary) the largest gap the points leave is
+    R, the largest distance from there to the nearest input point. A hole that holds no disc
+    larger than radius R (2 area / length, hole_radius) is no larger than a gap the points leave
     beside it: no method can tell it from one. The topology the points resolve is the truth's
     with each such hole filled by a disc (chi + 1, one loop fewer). OFF truths only."""
     cache = os.path.join(args.work, "truth", key + ".resolution.json")
@@ -374,7 +389,8 @@ def sampling_resolution(binary, truth, points, key, truth_topo, args):
     for i, loop in enumerate(boundary_loops(triangles)):
         length, gap = local_gap(binary, vertices, triangles, loop, points, args.work,
                                 f"{key}.{i}", args.timeout)
-        holes.append({"length": length, "largest_gap_around": gap, "resolved": length > 2 * math.pi * gap})
+        radius = hole_radius(vertices, loop)
+        holes.append({"length": length, "radius": radius, "largest_gap_around": gap, "resolved": radius > gap})
     unresolved = sum(1 for h in holes if not h["resolved"])
     topology = dict(truth_topo["topology"])
     topology["chi"] += unresolved
