@@ -326,9 +326,10 @@ def boundary_loops(triangles):
 
 
 def hole_radius(vertices, loop):
-    """The radius of the disc a hole would hold, 2 area / length: a round hole's radius, a
-    triangular one's inscribed circle, about half the width of a slot. The area is the size of
-    the loop's vector area (the hole's area where it is near planar)."""
+    """2 area / length: a round hole's radius and a triangular one's inscribed circle; for a
+    slot, its width, twice its inscribed circle (so a slot counts as resolved sooner, the strict
+    side for the tool measured). The area is the size of the loop's vector area (the hole's area
+    where it is near planar)."""
     ax = ay = az = 0.0
     for a, b in loop:
         p, q = vertices[a], vertices[b]
@@ -374,8 +375,8 @@ def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
 def sampling_resolution(binary, truth, points, key, truth_topo, args):
     """Which of the truth's holes the points resolve. Around each hole (the truth's surface
     within one hole diameter, length / pi, of its boundary) the largest gap the points leave is
-    R, the largest distance from there to the nearest input point. A hole that holds no disc
-    larger than radius R (2 area / length, hole_radius) is no larger than a gap the points leave
+    R, the largest distance from there to the nearest input point. A hole whose size (radius
+    2 area / length, hole_radius) is no larger than R is no larger than a gap the points leave
     beside it: no method can tell it from one. The topology the points resolve is the truth's
     with each such hole filled by a disc (chi + 1, one loop fewer). OFF truths only."""
     cache = os.path.join(args.work, "truth", key + ".resolution.json")
