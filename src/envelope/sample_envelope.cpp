@@ -132,7 +132,9 @@ EnvelopeSamples sample_envelope(const SurfaceSamples& surface, const EnvelopeOpt
   for (const auto& c : surface.boundary)
     for (const auto& b : c.vertices) curve_points.push_back(b.position);
   PointTree curve_tree(curve_points.begin(), curve_points.end());
-  curve_tree.build();
+  // Built now, before the parallel queries (a search would build it, racing). A closed surface
+  // has no curve: CGAL asserts on building an empty tree, and every query checks for one.
+  if (!curve_points.empty()) curve_tree.build();
   if (options.rho) {
     out.rho = *options.rho;
   } else {

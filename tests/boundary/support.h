@@ -31,6 +31,8 @@ class TruthIndex {
         vertices_.push_back(v);
       }
     }
+    // A closed surface has no curve: no map or tree (both take the first element).
+    if (points_.empty()) return;
     map_ = CGAL::make_property_map(std::as_const(points_));
     tree_ = std::make_unique<Tree>(boost::counting_iterator<std::size_t>(0),
                                    boost::counting_iterator<std::size_t>(points_.size()),
