@@ -36,10 +36,11 @@ for scan: inputs).
 
 Topology "right": the output's Euler characteristic, boundary loop count, orientability and
 number of pieces all equal the truth mesh's (as `envcrust analyze` reads both), or, where the
-truth has a hole no larger than the largest gap the points leave beside it (the disc it holds,
-of radius 2 area / length, no larger than R, the largest distance from the truth's surface
-within one hole diameter of the boundary to its nearest input point), the truth's with each
-such hole filled: the points cannot tell it from a gap. The truth cell names those holes ("resolved: ..."). Distances are
+truth has a hole no larger than the largest gap the points leave beside it (its radius,
+2 area / length, no larger than R, the largest distance from the truth's surface within one
+hole diameter of the boundary to its nearest input point), the truth's with each such hole
+filled: the points cannot tell it from a gap. The truth cell names those holes ("resolved:
+..."). Distances are
 the largest distance output->truth and truth->output, in % of the truth's box diagonal. Time
 is the wall clock of the whole command (envcrust's includes reading, normals, its own analysis
 against the input points, and writing; afsr_peer's reading and writing); peak is the largest
@@ -325,6 +326,10 @@ def boundary_loops(triangles):
     return list(loops.values())
 
 
+def loop_length(vertices, loop):
+    return sum(math.dist(vertices[a], vertices[b]) for a, b in loop)
+
+
 def hole_radius(vertices, loop):
     """2 area / length: a round hole's radius and a triangular one's inscribed circle; for a
     slot, its width, twice its inscribed circle (so a slot counts as resolved sooner, the strict
@@ -336,16 +341,15 @@ def hole_radius(vertices, loop):
         ax += p[1] * q[2] - p[2] * q[1]
         ay += p[2] * q[0] - p[0] * q[2]
         az += p[0] * q[1] - p[1] * q[0]
-    length = sum(math.dist(vertices[a], vertices[b]) for a, b in loop)
-    return 0.5 * math.sqrt(ax * ax + ay * ay + az * az) * 2 / length if length > 0 else 0.0
+    length = loop_length(vertices, loop)
+    return math.sqrt(ax * ax + ay * ay + az * az) / length if length > 0 else 0.0
 
 
 def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
     """The largest distance from the truth's surface within one hole diameter (length / pi) of a
     boundary loop to its nearest input point: the largest gap the points leave around the hole.
     Measured by `analyze` on that piece of the truth with the points as reference."""
-    length = sum(math.dist(vertices[a], vertices[b]) for a, b in loop)
-    reach = length / math.pi
+    reach = loop_length(vertices, loop) / math.pi
     rim = sorted({v for e in loop for v in e})
     lo = [min(vertices[v][i] for v in rim) - reach for i in range(3)]
     hi = [max(vertices[v][i] for v in rim) + reach for i in range(3)]
@@ -369,7 +373,7 @@ def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
     os.remove(path)
     if code != 0:
         raise ValueError(f"analyze of the piece round a hole: {err.strip()[-200:]}")
-    return length, json.loads(out)["distance"]["mesh_to_reference"]["max"]
+    return json.loads(out)["distance"]["mesh_to_reference"]["max"]
 
 
 def sampling_resolution(binary, truth, points, key, truth_topo, args):
@@ -388,10 +392,13 @@ def sampling_resolution(binary, truth, points, key, truth_topo, args):
     vertices, triangles = read_off(truth)
     holes = []
     for i, loop in enumerate(boundary_loops(triangles)):
-        length, gap = local_gap(binary, vertices, triangles, loop, points, args.work,
-                                f"{key}.{i}", args.timeout)
+        try:
+            gap = local_gap(binary, vertices, triangles, loop, points, args.work, f"{key}.{i}", args.timeout)
+        except ValueError as error:
+            return {"error": str(error)}
         radius = hole_radius(vertices, loop)
-        holes.append({"length": length, "radius": radius, "largest_gap_around": gap, "resolved": radius > gap})
+        holes.append({"length": loop_length(vertices, loop), "radius": radius, "largest_gap_around": gap,
+                      "resolved": radius > gap})
     unresolved = sum(1 for h in holes if not h["resolved"])
     topology = dict(truth_topo["topology"])
     topology["chi"] += unresolved

@@ -26,7 +26,9 @@ class NearestIndex {
     std::vector<std::size_t> ids(points.size());
     std::iota(ids.begin(), ids.end(), std::size_t{0});
     tree_ = std::make_unique<Tree>(ids.begin(), ids.end(), Splitter(), Traits(map_));
-    tree_->build();
+    // Built now, so that parallel queries only read it. CGAL asserts on building an empty
+    // tree; the queries below answer for no points without it.
+    if (!points.empty()) tree_->build();
   }
   [[nodiscard]] bool empty() const { return points_.empty(); }
   /// Index of the nearest point and its distance. @pre !empty()
@@ -39,12 +41,14 @@ class NearestIndex {
   /// hit: much cheaper than nearest() for a q far from every point, where the kd-tree may have
   /// to visit many leaves at about the same distance, such as a point on a cylinder's axis).
   [[nodiscard]] bool any_within(const Point3& q, double r) const {
+    if (points_.empty()) return false;
     const CGAL::Fuzzy_sphere<Traits> sphere(q, r, 0.0, Traits(map_));
     return tree_->search_any_point(sphere).has_value();
   }
   /// The k nearest points (index, distance), nearest first.
   std::vector<std::pair<std::size_t, double>> nearest(const Point3& q, unsigned k) const {
     std::vector<std::pair<std::size_t, double>> out;
+    if (points_.empty()) return out;
     Search search(*tree_, q, k, 0, true, Distance(map_));
     for (const auto& hit : search) out.emplace_back(hit.first, std::sqrt(hit.second));
     return out;
