@@ -16,3 +16,10 @@ if(Python3_FOUND AND pybind11_FOUND)
 else()
   set(ENVCRUST_PYTHON_FOUND FALSE)
 endif()
+
+# envcrust_add_pytest(NAME DIR TIMEOUT ENVIRONMENT): one ctest (label python) running pytest
+# over the tests in DIR with the interpreter found above; ENVIRONMENT is a list of VAR=value.
+function(envcrust_add_pytest name dir timeout environment)
+  add_test(NAME ${name} COMMAND ${Python3_EXECUTABLE} -m pytest -q -p no:cacheprovider ${dir})
+  set_tests_properties(${name} PROPERTIES LABELS python TIMEOUT ${timeout} ENVIRONMENT "${environment}")
+endfunction()

@@ -330,7 +330,7 @@ def loop_length(vertices, loop):
     return sum(math.dist(vertices[a], vertices[b]) for a, b in loop)
 
 
-def hole_radius(vertices, loop):
+def hole_radius(vertices, loop, length):
     """2 area / length: a round hole's radius and a triangular one's inscribed circle; for a
     slot, its width, twice its inscribed circle (so a slot counts as resolved sooner, the strict
     side for the tool measured). The area is the size of the loop's vector area (the hole's area
@@ -341,15 +341,14 @@ def hole_radius(vertices, loop):
         ax += p[1] * q[2] - p[2] * q[1]
         ay += p[2] * q[0] - p[0] * q[2]
         az += p[0] * q[1] - p[1] * q[0]
-    length = loop_length(vertices, loop)
     return math.sqrt(ax * ax + ay * ay + az * az) / length if length > 0 else 0.0
 
 
-def local_gap(binary, vertices, triangles, loop, points, work, name, timeout):
+def local_gap(binary, vertices, triangles, loop, length, points, work, name, timeout):
     """The largest distance from the truth's surface within one hole diameter (length / pi) of a
     boundary loop to its nearest input point: the largest gap the points leave around the hole.
     Measured by `analyze` on that piece of the truth with the points as reference."""
-    reach = loop_length(vertices, loop) / math.pi
+    reach = length / math.pi
     rim = sorted({v for e in loop for v in e})
     lo = [min(vertices[v][i] for v in rim) - reach for i in range(3)]
     hi = [max(vertices[v][i] for v in rim) + reach for i in range(3)]
@@ -392,12 +391,14 @@ def sampling_resolution(binary, truth, points, key, truth_topo, args):
     vertices, triangles = read_off(truth)
     holes = []
     for i, loop in enumerate(boundary_loops(triangles)):
+        length = loop_length(vertices, loop)
         try:
-            gap = local_gap(binary, vertices, triangles, loop, points, args.work, f"{key}.{i}", args.timeout)
+            gap = local_gap(binary, vertices, triangles, loop, length, points, args.work, f"{key}.{i}",
+                            args.timeout)
         except ValueError as error:
             return {"error": str(error)}
-        radius = hole_radius(vertices, loop)
-        holes.append({"length": loop_length(vertices, loop), "radius": radius, "largest_gap_around": gap,
+        radius = hole_radius(vertices, loop, length)
+        holes.append({"length": length, "radius": radius, "largest_gap_around": gap,
                       "resolved": radius > gap})
     unresolved = sum(1 for h in holes if not h["resolved"])
     topology = dict(truth_topo["topology"])

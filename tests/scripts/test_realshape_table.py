@@ -19,11 +19,11 @@ def square(side):
 
 def test_hole_radius_is_a_squares_and_a_triangles_inscribed_circle_and_a_slots_width():
     vertices, loop = square(2.0)
-    assert table.hole_radius(vertices, loop) == pytest.approx(1.0)
+    assert table.hole_radius(vertices, loop, 8.0) == pytest.approx(1.0)
     triangle = [(0.0, 0.0, 0.0), (4.0, 0.0, 0.0), (0.0, 3.0, 0.0)]
-    assert table.hole_radius(triangle, [(0, 1), (1, 2), (2, 0)]) == pytest.approx(1.0)  # 3-4-5
+    assert table.hole_radius(triangle, [(0, 1), (1, 2), (2, 0)], 12.0) == pytest.approx(1.0)  # 3-4-5
     slot = [(0.0, 0.0, 0.0), (100.0, 0.0, 0.0), (100.0, 2.0, 0.0), (0.0, 2.0, 0.0)]
-    assert table.hole_radius(slot, [(0, 1), (1, 2), (2, 3), (3, 0)]) == pytest.approx(400 / 204)
+    assert table.hole_radius(slot, [(0, 1), (1, 2), (2, 3), (3, 0)], 204.0) == pytest.approx(400 / 204)
 
 
 def grid_with_hole(n, hole):
