@@ -452,7 +452,12 @@ def run_envcrust(args, points, out_dir, truth_topo):
     result["raw_sheet"] = {k: s.get(k) for k in ("orientation_seams", "handle_balls", "self_intersections_found",
                                                   "self_intersections_left", "cut_holes_filled",
                                                   "cut_notches_closed")}
-    result["kept"] = ("power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
+    local = j.get("local_rho_first")
+    if local:
+        result["local_rho_first"] = {k: local.get(k) for k in ("kept", "seconds", "envelope_samples",
+                                                              "orientation_seams", "handle_balls")}
+    result["kept"] = ("local" if local and local.get("kept") else
+                      "power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
                       "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
     # What the output is: the input points meshed along the sheet, the sheet or Power Crust
     # simplified to the samples' resolution, the result remeshed (--remesh in

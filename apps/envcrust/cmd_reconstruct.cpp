@@ -182,7 +182,7 @@ void choose_input_options(ReconstructCommand& cmd, const LoadedSurface& loaded) 
     sheet.cut_to_orientable = false;
   }
   if (cmd.cut_handles) sheet.cut_handles_rel_rho = *cmd.cut_handles;
-  if (cmd.no_adaptive_retry) cmd.options.use_adaptive_retry = false;
+  if (cmd.no_adaptive_retry) cmd.options.use_adaptive_retry = cmd.options.use_local_rho_first = false;
   if (cmd.no_power_crust_fallback) cmd.options.use_power_crust_fallback = false;
   if (cmd.options.method == pipeline::Method::Envelope && cmd.options.extraction == pipeline::Extraction::Sheet) return;
   if (cmd.orientable == "yes" || cmd.cut_handles.value_or(0) > 0)
@@ -501,9 +501,10 @@ void register_reconstruct(CLI::App& app) {
                   "Reference for distances (default: the exact surface of a builtin, the surface of an input mesh, else the input points)");
   sub->add_flag("--no-analysis", cmd->no_analysis, "Skip the analysis of the output");
   sub->add_flag("--no-adaptive-retry", cmd->no_adaptive_retry,
-                "Keep the uniform-rho run even when its result has holes the input has not, or more handles than "
-                "a mesh input (by default the reconstruction then runs again with --rho-adaptive and keeps the "
-                "run with fewer defects)");
+                "One uniform-rho run, kept even when its result has holes the input has not, or more handles than "
+                "a mesh input (by default a file's reconstruction first tries a rho that follows the local feature "
+                "size, kept when its sheet needs no cut; then the uniform run, which runs again with --rho-adaptive "
+                "when it fails and keeps the run with fewer defects)");
   sub->add_flag("--no-power-crust-fallback", cmd->no_power_crust_fallback,
                 "Keep the envelope's result of an input without boundary curves (or with detected ones) even when "
                 "it fails its checks (by default the direct Power Crust, which needs no normals and copes with "

@@ -51,6 +51,22 @@ std::string describe(const pipeline::RunDefects &d, const std::optional<long> &m
   return out + " (" + count(d.count(max_genus), " defect", " defects") + ")";
 }
 
+std::string describe(const pipeline::LocalRhoFirst &local, const std::optional<long> &max_genus) {
+  std::ostringstream out;
+  out << std::setprecision(4) << "rho: the local run (rho " << local.rho_min << " to " << local.rho_max << ", "
+      << local.envelope_samples << " envelope samples, " << local.seconds << " s) ";
+  if (local.is_kept) return out.str() + "needed no cut and has " + describe(*local.defects, max_genus) + ", kept";
+  if (local.defects) {
+    out << "has " << describe(*local.defects, max_genus);
+  } else {
+    out << "needed a cut (" << local.orientation_seams
+        << (local.orientation_seams == 1 ? " orientation seam, " : " orientation seams, ") << local.handle_balls
+        << (local.handle_balls == 1 ? " handle ball)" : " handle balls)");
+  }
+  out << ", not kept: the uniform run follows";
+  return out.str();
+}
+
 std::string describe(const pipeline::AdaptiveRetry &retry) {
   return "rho: the uniform run has " + describe(retry.uniform, retry.max_genus) +
          (retry.max_genus ? " where the input mesh has genus " + std::to_string(*retry.max_genus) : std::string()) +
@@ -97,6 +113,17 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
                   {"extraction", result.seconds.extraction},
                   {"remesh", result.seconds.remesh},
                   {"simplify", result.seconds.simplify}};
+  if (const auto &local = result.local_rho_first) {
+    j["local_rho_first"] = {{"rho_min", local->rho_min},
+                            {"rho_max", local->rho_max},
+                            {"envelope_samples", local->envelope_samples},
+                            {"orientation_seams", local->orientation_seams},
+                            {"handle_balls", local->handle_balls},
+                            {"result", local->defects ? defects_json(*local->defects, options.max_genus)
+                                                      : nlohmann::json(nullptr)},
+                            {"seconds", local->seconds},
+                            {"kept", local->is_kept}};
+  }
   if (const auto &retry = result.adaptive_retry) {
     j["adaptive_retry"] = {
         {"max_genus", retry->max_genus ? nlohmann::json(*retry->max_genus) : nlohmann::json(nullptr)},
@@ -209,6 +236,7 @@ void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &resu
                                                       : " (from the reach)")
         << (result.envelope.local_rho.empty() ? "" : ", at least " + std::to_string(result.envelope.rho_min))
         << ", spacing " << result.envelope.spacing << ", " << result.envelope.samples.size() << " samples\n";
+  if (const auto &local = result.local_rho_first) out << "  " << describe(*local, options.max_genus) << "\n";
   if (const auto &retry = result.adaptive_retry) out << "  " << describe(*retry) << "\n";
   if (const auto &f = result.power_crust_fallback) out << "  " << describe(*f, options.max_genus) << "\n";
   // The stages that ran (the sheet runs its own Delaunay triangulation, no

@@ -131,10 +131,15 @@ struct SheetOptions {
   /// it found is undone and tried again with twice the radius, up to 4 times
   /// self_intersection_cut_rel_rho, then ends the cutting. >= 1.
   int self_intersection_cut_rounds = 3;
+  /// Return right after the orientation or the handle cut when either removed anything,
+  /// before the cuts that follow (SheetStats::stopped_after_cut): for a caller that drops
+  /// such a sheet anyway (reconstruct's local-rho first run).
+  bool stop_after_cut = false;
 };
 
 /// What extract_sheet did.
 struct SheetStats {
+  bool stopped_after_cut = false;       ///< SheetOptions::stop_after_cut ended the run early
   std::size_t delaunay_edges = 0;       ///< finite edges examined
   std::size_t crossing_edges = 0;       ///< edges selected by the angle test
   std::size_t polygons = 0;             ///< dual Voronoi polygons kept

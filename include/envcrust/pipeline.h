@@ -59,6 +59,15 @@ struct ReconstructOptions {
   /// half the reach to bridge the input's gaps (the envelope may fold into handles there).
   /// Off: one run.
   bool use_adaptive_retry = false;
+  /// With automatic rho, try first one run whose rho follows the local feature size up to
+  /// kLocalRhoCeilingRelDiag of the samples' diagonal (adaptive rho down to
+  /// kLocalRhoFloorRelCeiling of that), and keep it when its raw sheet needed neither an
+  /// orientation nor a handle cut and its result has no defect (RunDefects: a manifold, every
+  /// input curve followed, no hole, piece or handle too many); otherwise the uniform run and
+  /// its retries follow (ReconstructResult::local_rho_first). Where the sheet comes out clean,
+  /// a rho as large as each place allows makes the envelope several times smaller. Off: the
+  /// uniform run first. Method::Envelope with Extraction::Sheet and RhoMode::Uniform only.
+  bool use_local_rho_first = false;
   /// When the input has no boundary curves (a closed surface), or only curves detected from its
   /// points (are_curves_detected), and the envelope's result, after the adaptive retry if that
   /// ran, fails the same check (empty, no manifold, more pieces than the samples form, handles
@@ -138,6 +147,26 @@ struct RunDefects {
   [[nodiscard]] bool is_better_than(const RunDefects& other, std::optional<long> max_genus) const;
 };
 
+/// Ceiling of the local-rho first run (ReconstructOptions::use_local_rho_first): half the
+/// automatic reach's cap (EnvelopeOptions::max_reach_rel_diag), the largest rho the automatic
+/// choice can give.
+inline constexpr double kLocalRhoCeilingRelDiag = 0.05;
+/// Its floor as a fraction of the ceiling: 0.1% of the diagonal, below every feature a 30k
+/// sample of the development set resolves (docs/real-shapes.md).
+inline constexpr double kLocalRhoFloorRelCeiling = 0.02;
+
+/// What the local-rho first run did (ReconstructOptions::use_local_rho_first).
+struct LocalRhoFirst {
+  /// Its result's check; unset when its sheet needed a cut (the run stopped there).
+  std::optional<RunDefects> defects;
+  std::size_t orientation_seams = 0;  ///< of its raw sheet (extract::SheetStats)
+  std::size_t handle_balls = 0;       ///< of its raw sheet
+  double rho_min = 0, rho_max = 0;    ///< its local rho's range
+  std::size_t envelope_samples = 0;
+  double seconds = 0;                 ///< spent on it, kept or not
+  bool is_kept = false;
+};
+
 /// What the adaptive retry did.
 struct AdaptiveRetry {
   std::optional<long> max_genus;
@@ -186,6 +215,7 @@ struct ReconstructResult {
   std::optional<powercrust::PowerCrustStats> power_crust_stats;
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
+  std::optional<LocalRhoFirst> local_rho_first;   ///< set when the local-rho run was tried
   std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
   std::optional<PowerCrustFallback> power_crust_fallback;  ///< set when the fallback ran
   std::optional<SampleMeshing> sample_meshing;  ///< set when the samples were meshed
@@ -202,7 +232,8 @@ struct ReconstructResult {
   std::vector<std::string> warnings;
 };
 
-/// Reconstruct M from its samples (points with normal lines and boundary curves): one run,
+/// Reconstruct M from its samples (points with normal lines and boundary curves): with
+/// options.use_local_rho_first a local-rho run kept when its sheet is clean; otherwise one run,
 /// a second with adaptive rho if the first fails the check of options.use_adaptive_retry,
 /// the direct Power Crust if the input has no boundary curves and the kept run still fails
 /// (options.use_power_crust_fallback), then the samples' mesh (options.mesh_samples) or the

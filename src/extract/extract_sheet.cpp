@@ -213,6 +213,13 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     count_holes(r.holes);
   }
   seconds.orientable_cut = clock.lap();
+  // The sheet as it is once a cut was needed, for a caller that drops it then.
+  auto stop = [&] {
+    result.stats.stopped_after_cut = true;
+    result.mesh = std::move(sheet.mesh);
+    return result;
+  };
+  if (options.stop_after_cut && result.stats.orientation_seams > 0) return stop();
   progress.report("sheet: handle cut", 0.66);
   if (options.cut_handles_rel_rho > 0) {
     const HandleRepairStats r =
@@ -222,6 +229,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
     count_holes(r.holes);
   }
   seconds.handle_cut = clock.lap();
+  if (options.stop_after_cut && result.stats.handle_balls > 0) return stop();
   if (options.self_intersection_cut_rel_rho > 0) {
     progress.report("sheet: self-intersections", 0.9);
     const SelfIntersectionRepairStats r = repair_self_intersections(

@@ -134,6 +134,8 @@ ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions 
   if (!input.is_builtin) options.mesh_samples = interpolate::InterpolateOptions{};
   options.use_adaptive_retry = !options.envelope.rho.has_value();
   options.use_power_crust_fallback = options.use_adaptive_retry;
+  // A built-in surface's rho is the experiments' subject; a file's is chosen for it.
+  options.use_local_rho_first = options.use_adaptive_retry && !input.is_builtin;
   options.are_curves_detected = input.is_boundary_detected;
   options.max_genus = input.genus;
   return options;
@@ -410,16 +412,59 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
 
 }  // namespace
 
+namespace {
+
+// The local-rho first run (ReconstructOptions::use_local_rho_first): its result, or nothing
+// when it is not kept; what it did goes in `report` either way.
+std::optional<ReconstructResult> local_rho_run(const envelope::SurfaceSamples& samples, const ReconstructOptions& once,
+                                               LocalRhoFirst& report, const Progress& progress) {
+  Stopwatch clock;
+  ReconstructOptions local = once;
+  local.envelope.rho = kLocalRhoCeilingRelDiag * mesh::bbox_diagonal(samples.points);
+  local.envelope.rho_mode = envelope::RhoMode::Adaptive;
+  local.envelope.adaptive_min_rel_rho = kLocalRhoFloorRelCeiling;
+  // A cut sized by a rho up to 5% of the diagonal takes real parts with it, and the uniform
+  // run's smaller rho needs none there: only a sheet that needed no cut is kept, and the
+  // extraction stops at the first one (on broken sheets the repairs after it cost the most).
+  local.sheet.stop_after_cut = true;
+  ReconstructResult run = reconstruct_once(samples, local, progress);
+  report.rho_min = run.envelope.rho_min;
+  report.rho_max = run.envelope.rho;
+  report.envelope_samples = run.envelope.samples.size();
+  if (run.sheet_stats && !run.sheet_stats->stopped_after_cut) {
+    SampleGroups groups(samples, run.envelope.rho);
+    report.defects = defects_of(run, samples, run.envelope, groups);
+    report.is_kept = report.defects->missing_curves == 0 && !fails(*report.defects, run.envelope, local.max_genus);
+  }
+  if (run.sheet_stats) {
+    report.orientation_seams = run.sheet_stats->orientation_seams;
+    report.handle_balls = run.sheet_stats->handle_balls;
+  }
+  report.seconds = clock.lap();
+  if (!report.is_kept) return std::nullopt;
+  return run;
+}
+
+}  // namespace
+
 ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
                               const ReconstructOptions& options, const Progress& progress) {
   ReconstructOptions once = options;
   once.remesh.reset();
-  ReconstructResult out = reconstruct_once(samples, once, progress);
-  out.method = options.method;
   const bool is_sheet_run = options.method == Method::Envelope && options.extraction == Extraction::Sheet;
+  const bool is_rho_automatic = !options.envelope.rho && options.envelope.rho_mode == envelope::RhoMode::Uniform;
+  std::optional<LocalRhoFirst> local_report;
+  std::optional<ReconstructResult> local;
+  if (options.use_local_rho_first && is_sheet_run && is_rho_automatic && samples.points.size() >= 2)
+    local = local_rho_run(samples, once, local_report.emplace(), progress);
+  ReconstructResult out = local ? std::move(*local) : reconstruct_once(samples, once, progress);
+  out.method = options.method;
+  out.local_rho_first = local_report;
+  if (local_report && !local_report->is_kept) out.seconds.envelope += local_report->seconds;
   SampleGroups groups(samples, out.envelope.rho);
   std::optional<RunDefects> kept;  // the checks of the kept envelope run, when made
-  if (options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
+  if (local) kept = *local_report->defects;
+  if (!local && options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
     AdaptiveRetry retry;
     retry.max_genus = options.max_genus;
     retry.uniform = defects_of(out, samples, out.envelope, groups);
@@ -439,7 +484,8 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
       out.adaptive_retry = retry;
     }
   }
-  if (options.use_power_crust_fallback && is_sheet_run && (samples.boundary.empty() || options.are_curves_detected)) {
+  if (!local && options.use_power_crust_fallback && is_sheet_run &&
+      (samples.boundary.empty() || options.are_curves_detected)) {
     if (!kept) kept = defects_of(out, samples, out.envelope, groups);
     kept->uncovered_patches = uncovered_patches(out.mesh, samples.points, out.envelope.rho);
     // An input too sparse for its size (gaps of a tenth of its diagonal and more) does not
