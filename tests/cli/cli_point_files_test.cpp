@@ -45,6 +45,14 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   EXPECT_NEAR(j["sheet"]["orientable_max_twist_loop_rel_rho"].get<double>(), 4 * 3.14159265, 1e-6);
   EXPECT_EQ(j["sheet"]["orientation_seams"], 0);
   EXPECT_EQ(j["sheet"]["orientation_twists_kept"], 0);
+  // The first run, with a local rho, needed no cut and is the result: its rho reaches the
+  // ceiling (5% of the diagonal) everywhere on a cylinder of reach 1 and diagonal 2 sqrt 3.
+  const auto& local = j["local_rho_first"];
+  EXPECT_EQ(local["kept"], true);
+  EXPECT_EQ(local["result"]["defects"], 0);
+  EXPECT_NEAR(local["rho_max"].get<double>(), 0.05 * 2 * std::sqrt(3.0), 0.002);
+  EXPECT_EQ(local["envelope_samples"], j["envelope"]["samples"]);
+  EXPECT_FALSE(j.contains("adaptive_retry"));
 }
 
 // Normals in a point file say nothing about the rim: the reach of its surface is read the same
