@@ -459,8 +459,6 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     local = local_rho_run(samples, once, local_report.emplace(), progress);
   ReconstructResult out = local ? std::move(*local) : reconstruct_once(samples, once, progress);
   out.method = options.method;
-  out.local_rho_first = local_report;
-  if (local_report && !local_report->is_kept) out.seconds.envelope += local_report->seconds;
   SampleGroups groups(samples, out.envelope.rho);
   std::optional<RunDefects> kept;  // the checks of the kept envelope run, when made
   if (local) kept = *local_report->defects;
@@ -497,6 +495,9 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
         samples.boundary.size() < kept->count(options.max_genus))
       power_crust_fallback(out, *kept, samples, options, groups, progress);
   }
+  // Set after the retries, which may replace `out` with their own run.
+  if (local_report && !local_report->is_kept) out.seconds.envelope += local_report->seconds;
+  out.local_rho_first = local_report;
   // The Power Crust's surface, where it replaced the sheet, guides the samples' mesh as well:
   // it too lies on the samples, ten times as finely.
   if (options.mesh_samples && !options.remesh && is_sheet_run) {
