@@ -42,6 +42,9 @@ TEST(SampleMeshing, moebius_strip_keeps_its_non_orientable_sheet_at_the_samples_
   ASSERT_TRUE(result.sample_meshing.has_value());
   EXPECT_FALSE(result.sample_meshing->is_kept);
   EXPECT_EQ(result.sample_meshing->sheet_topology, "chi 0, 1 loop, 1 piece, non-orientable");
+  // Not even tried: the front's faces are wound from their neighbours', always orientable.
+  EXPECT_EQ(result.sample_meshing->samples_topology, "no mesh (an advancing front makes only orientable surfaces)");
+  EXPECT_EQ(result.sample_meshing->stats.seconds, 0.0);
   ASSERT_TRUE(result.simplify_stats.has_value());
   EXPECT_TRUE(result.simplify_stats->is_simplified) << (result.warnings.empty() ? "" : result.warnings.back());
   EXPECT_GT(result.simplify_stats->vertices_before, 3 * samples.points.size());
