@@ -151,8 +151,8 @@ struct RunDefects {
 /// automatic reach's cap (EnvelopeOptions::max_reach_rel_diag), the largest rho the automatic
 /// choice can give.
 inline constexpr double kLocalRhoCeilingRelDiag = 0.05;
-/// Its floor as a fraction of the ceiling: 0.1% of the diagonal, below every feature a 30k
-/// sample of the development set resolves (docs/real-shapes.md).
+/// Its floor as a fraction of the ceiling: 0.1% of the diagonal, the floor of the local-rho
+/// runs measured on the development set (docs/real-shapes.md).
 inline constexpr double kLocalRhoFloorRelCeiling = 0.02;
 
 /// What the local-rho first run did (ReconstructOptions::use_local_rho_first).
