@@ -217,7 +217,7 @@ SheetResult extract_sheet(const envelope::EnvelopeSamples& envelope,
   auto stop = [&] {
     result.stats.stopped_after_cut = true;
     result.mesh = std::move(sheet.mesh);
-    return result;
+    return std::move(result);  // captured by reference: a plain return would copy the mesh
   };
   if (options.stop_after_cut && result.stats.orientation_seams > 0) return stop();
   progress.report("sheet: handle cut", 0.66);

@@ -467,7 +467,6 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   out.method = options.method;
   SampleGroups groups(samples, out.envelope.rho);
   std::optional<RunDefects> kept;  // the checks of the kept envelope run, when made
-  if (local) kept = *local_report->defects;
   if (!local && options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
     AdaptiveRetry retry;
     retry.max_genus = options.max_genus;
