@@ -61,6 +61,13 @@ std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const Lo
   tree.build();
   const double min_pair2 = options.min_pair_distance * options.min_pair_distance;
   const CreaseDistance creases(samples.creases);
+  // A pair reads |q - p|^2 / (2 |(q - p) . n|) < B exactly when q lies inside one of the two
+  // balls of radius B tangent to the plane at p (centres p +- B n). So the two balls of radius
+  // B = search_radius / 2 hold every pair the search radius can see below B, and only those:
+  // the surface grazes them, where the search ball of radius 2B held a whole patch of it
+  // (head, 30k samples: 2.1 of 10 s of CPU before). Values B and above are not seen and stay
+  // infinite, as documented.
+  const double ball = 0.5 * options.search_radius;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const auto& range) {
     std::vector<std::size_t> hits;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -69,7 +76,8 @@ std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const Lo
       const double max_pair2 = crease * crease;
       const Vector3 normal = samples.normals[i] / std::sqrt(samples.normals[i].squared_length());
       hits.clear();
-      tree.search(std::back_inserter(hits), Sphere(pts[i], options.search_radius, 0.0, Traits(map)));
+      tree.search(std::back_inserter(hits), Sphere(pts[i] + ball * normal, ball, 0.0, Traits(map)));
+      tree.search(std::back_inserter(hits), Sphere(pts[i] - ball * normal, ball, 0.0, Traits(map)));
       for (std::size_t j : hits) {
         const Vector3 v = pts[j] - pts[i];
         const double len2 = v.squared_length();
