@@ -162,6 +162,7 @@ Options (keywords; the defaults are those of `envcrust reconstruct`):
   remesh=False              remesh the result isotropically
   adaptive_retry=True       try a local rho first, rerun with adaptive rho when a run fails its checks
   power_crust_fallback=True try the plain Power Crust when the envelope's result fails its checks
+                            (and first, on input without boundary curves)
   keep_outliers=False       keep the stray samples that are otherwise removed
   detect_boundary=True      False: the surface is closed (--no-boundary)
   boundary_min_width=0      drop detected loops narrower than this many sample spacings
@@ -204,8 +205,9 @@ pipeline::ReconstructOptions options_for_run(const ReconstructSettings& settings
     sheet.cut_to_orientable = false;
   }
   if (settings.cut_handles) sheet.cut_handles_rel_rho = *settings.cut_handles;
-  if (!settings.use_adaptive_retry) options.use_adaptive_retry = options.use_local_rho_first = false;
-  if (!settings.use_power_crust_fallback) options.use_power_crust_fallback = false;
+  if (!settings.use_adaptive_retry)
+    options.use_adaptive_retry = options.use_local_rho_first = options.use_power_crust_first = false;
+  if (!settings.use_power_crust_fallback) options.use_power_crust_fallback = options.use_power_crust_first = false;
   if (options.method == pipeline::Method::Envelope && options.extraction == pipeline::Extraction::Sheet) return options;
   if (settings.orientable == "yes" || settings.cut_handles.value_or(0) > 0)
     throw py::value_error("orientable and cut_handles apply to the medial sheet (method='envelope', extract='sheet')");

@@ -444,7 +444,7 @@ def run_envcrust(args, points, out_dir, truth_topo):
         result["error"] = f"exit {code}: {err.strip()[-300:]}"
         return result
     j = json.loads(stdout)
-    s, e = j.get("sheet", {}), j.get("envelope", {})
+    s, e = j.get("sheet", {}), j.get("envelope") or {}
     result["stage_seconds"] = j.get("seconds")
     result["rho"] = e.get("rho")
     result["rho_min"] = e.get("rho_min")
@@ -456,7 +456,11 @@ def run_envcrust(args, points, out_dir, truth_topo):
     if local:
         result["local_rho_first"] = {k: local.get(k) for k in ("kept", "seconds", "envelope_samples",
                                                               "orientation_seams", "handle_balls")}
-    result["kept"] = ("local" if local and local.get("kept") else
+    first = j.get("power_crust_first")
+    if first:
+        result["power_crust_first"] = {k: first.get(k) for k in ("kept", "seconds")}
+    result["kept"] = ("power crust first" if first and first.get("kept") else
+                      "local" if local and local.get("kept") else
                       "power crust" if j.get("power_crust_fallback", {}).get("kept") == "power_crust" else
                       "adaptive" if j.get("adaptive_retry", {}).get("kept") == "adaptive" else "uniform")
     # What the output is: the input points meshed along the sheet, the sheet or Power Crust

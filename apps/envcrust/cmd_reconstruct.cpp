@@ -182,8 +182,11 @@ void choose_input_options(ReconstructCommand& cmd, const LoadedSurface& loaded) 
     sheet.cut_to_orientable = false;
   }
   if (cmd.cut_handles) sheet.cut_handles_rel_rho = *cmd.cut_handles;
-  if (cmd.no_adaptive_retry) cmd.options.use_adaptive_retry = cmd.options.use_local_rho_first = false;
-  if (cmd.no_power_crust_fallback) cmd.options.use_power_crust_fallback = false;
+  if (cmd.no_adaptive_retry)
+    cmd.options.use_adaptive_retry = cmd.options.use_local_rho_first = cmd.options.use_power_crust_first = false;
+  if (cmd.no_power_crust_fallback) cmd.options.use_power_crust_fallback = cmd.options.use_power_crust_first = false;
+  // The envelope asked for is made: no Power Crust in its place before it.
+  if (!cmd.envelope_output.empty()) cmd.options.use_power_crust_first = false;
   if (cmd.options.method == pipeline::Method::Envelope && cmd.options.extraction == pipeline::Extraction::Sheet) return;
   if (cmd.orientable == "yes" || cmd.cut_handles.value_or(0) > 0)
     throw UsageError("--orientable and --cut-handles apply to the medial sheet (--method envelope --extract sheet)");
@@ -509,7 +512,7 @@ void register_reconstruct(CLI::App& app) {
                 "Keep the envelope's result of an input without boundary curves (or with detected ones) even when "
                 "it fails its checks (by default the direct Power Crust, which needs no normals and copes with "
                 "sparser samples of a closed surface, then runs too and is kept if it has fewer defects and caps "
-                "no hole)");
+                "no hole; a file without boundary curves gets it first, kept when it has no defect at all)");
   sub->add_option("--report", cmd->report_file, "Also write the JSON report to this file");
   html::add_html_option(*sub, cmd->html_file,
                         "the result, each vertex coloured on demand by its distance to the nearest input point");

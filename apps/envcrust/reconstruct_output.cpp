@@ -67,6 +67,19 @@ std::string describe(const pipeline::LocalRhoFirst &local, const std::optional<l
   return out.str();
 }
 
+std::string describe(const pipeline::PowerCrustFirst &first, const std::optional<long> &max_genus) {
+  std::ostringstream out;
+  out << std::setprecision(4) << "the input has no boundary curve: the direct Power Crust first (" << first.seconds
+      << " s) ";
+  if (!first.failure.empty()) return out.str() + "failed (" + first.failure + "), the envelope runs follow";
+  out << "has " << describe(first.defects, max_genus);
+  if (first.farthest_from_samples > first.allowed_distance)
+    out << " and reaches " << first.farthest_from_samples << " from the samples, beyond their gaps ("
+        << first.allowed_distance << ")";
+  if (first.is_input_too_sparse) out << ", on samples too sparse for their size";
+  return out.str() + (first.is_kept ? ", kept (no envelope run)" : ", not kept: the envelope runs follow");
+}
+
 std::string describe(const pipeline::AdaptiveRetry &retry) {
   return "rho: the uniform run has " + describe(retry.uniform, retry.max_genus) +
          (retry.max_genus ? " where the input mesh has genus " + std::to_string(*retry.max_genus) : std::string()) +
@@ -106,13 +119,24 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
   j["method"] = options.method == pipeline::Method::Envelope ? "envelope" : "powercrust";
   if (options.method == pipeline::Method::Envelope) {
     j["extraction"] = options.extraction == pipeline::Extraction::Sheet ? "sheet" : "powershape";
-    j["envelope"] = envelope_json(result.envelope);
+    // null when the Power Crust first was kept: no envelope run was made.
+    j["envelope"] = result.power_crust_first && result.power_crust_first->is_kept ? nlohmann::json(nullptr)
+                                                                                  : envelope_json(result.envelope);
   }
   j["seconds"] = {{"envelope", result.seconds.envelope},
                   {"power_crust", result.seconds.power_crust},
                   {"extraction", result.seconds.extraction},
                   {"remesh", result.seconds.remesh},
                   {"simplify", result.seconds.simplify}};
+  if (const auto &first = result.power_crust_first) {
+    j["power_crust_first"] = {{"result", defects_json(first->defects, options.max_genus)},
+                              {"farthest_from_samples", first->farthest_from_samples},
+                              {"allowed_distance", first->allowed_distance},
+                              {"failure", first->failure},
+                              {"input_too_sparse", first->is_input_too_sparse},
+                              {"seconds", first->seconds},
+                              {"kept", first->is_kept}};
+  }
   if (const auto &local = result.local_rho_first) {
     j["local_rho_first"] = {{"rho_min", local->rho_min},
                             {"rho_max", local->rho_max},
@@ -227,7 +251,9 @@ nlohmann::json run_stages_json(const pipeline::ReconstructResult &result, const 
 
 void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &result,
                       const pipeline::ReconstructOptions &options) {
-  if (options.method == pipeline::Method::Envelope)
+  const bool is_crust_first = result.power_crust_first && result.power_crust_first->is_kept;
+  if (const auto &first = result.power_crust_first) out << "  " << describe(*first, options.max_genus) << "\n";
+  if (options.method == pipeline::Method::Envelope && !is_crust_first)
     out << "  envelope: rho " << (result.envelope.local_rho.empty() ? "" : "adaptive, at most ") << result.envelope.rho
         << (result.envelope.reach.pairs_examined == 0 ? ""
             : result.envelope.is_rho_gap_bound        ? " (from the input's gaps)"
@@ -247,11 +273,11 @@ void print_run_stages(std::ostream &out, const pipeline::ReconstructResult &resu
     out << separator << name << " " << seconds << " s";
     separator = ", ";
   };
-  if (options.method == pipeline::Method::Envelope) stage("envelope", result.seconds.envelope);
-  if (result.power_crust_stats || result.power_crust_fallback)
+  if (options.method == pipeline::Method::Envelope && !is_crust_first) stage("envelope", result.seconds.envelope);
+  if (result.power_crust_stats || result.power_crust_fallback || result.power_crust_first)
     stage(options.method == pipeline::Method::PowerCrust ? "power crust"
-          : result.power_crust_fallback                  ? "direct power crust"
-                                                         : "power crust of the envelope",
+          : result.power_crust_fallback || result.power_crust_first ? "direct power crust"
+                                                                    : "power crust of the envelope",
           result.seconds.power_crust);
   if (result.sheet_stats) stage("extraction", result.seconds.extraction);
   out << "\n";

@@ -68,6 +68,12 @@ struct ReconstructOptions {
   /// a rho as large as each place allows makes the envelope several times smaller. Off: the
   /// uniform run first. Method::Envelope with Extraction::Sheet and RhoMode::Uniform only.
   bool use_local_rho_first = false;
+  /// With automatic rho and an input without boundary curves, run the direct Power Crust before
+  /// any envelope run, and keep its result when it has no defect at all (ReconstructResult::
+  /// power_crust_first): a closed surface is its home ground, and it costs a fraction of an
+  /// envelope run. Not kept, it is reused by the fallback. Method::Envelope with
+  /// Extraction::Sheet and RhoMode::Uniform only.
+  bool use_power_crust_first = false;
   /// When the input has no boundary curves (a closed surface), or only curves detected from its
   /// points (are_curves_detected), and the envelope's result, after the adaptive retry if that
   /// ran, fails the same check (empty, no manifold, more pieces than the samples form, handles
@@ -194,6 +200,25 @@ struct PowerCrustFallback {
   bool kept_power_crust = false;
 };
 
+/// What the Power Crust first did (ReconstructOptions::use_power_crust_first): the direct
+/// Power Crust of a closed input, tried before any envelope run and kept when its result has
+/// no defect at all.
+struct PowerCrustFirst {
+  /// Its result's check: manifold, no border, no piece more than the samples' sets (within
+  /// 2 rho, rho = the gap size / 2.5, what bridges the gaps), no handle beyond the known genus
+  /// (none when unknown), no sample set left uncovered.
+  RunDefects defects;
+  /// Its farthest vertex or face centre from the nearest sample, and the bound (the gap size:
+  /// the largest distance of 99% of the samples to their 8th nearest).
+  double farthest_from_samples = 0, allowed_distance = 0;
+  std::string failure;  ///< why the Power Crust threw, if it did (the run then counts as empty)
+  /// The samples' gaps need a rho beyond what resolves their size (EnvelopeSamples::
+  /// is_input_too_sparse): no method can tell the shape, and a closed crust is not kept.
+  bool is_input_too_sparse = false;
+  double seconds = 0;   ///< spent on it, kept or not
+  bool is_kept = false;
+};
+
 /// Seconds spent per stage.
 struct StageTimes {
   double envelope = 0, power_crust = 0, extraction = 0, remesh = 0, simplify = 0;
@@ -215,6 +240,7 @@ struct ReconstructResult {
   std::optional<powercrust::PowerCrustStats> power_crust_stats;
   std::optional<TriangleMesh> envelope_crust;  ///< the Power Crust of the envelope, if run
   std::optional<remesh::RemeshStats> remesh_stats;  ///< set when options.remesh is
+  std::optional<PowerCrustFirst> power_crust_first;  ///< set when a closed input's Power Crust was tried first
   std::optional<LocalRhoFirst> local_rho_first;   ///< set when the local-rho run was tried
   std::optional<AdaptiveRetry> adaptive_retry;    ///< set when the uniform run failed its check
   std::optional<PowerCrustFallback> power_crust_fallback;  ///< set when the fallback ran
@@ -223,7 +249,8 @@ struct ReconstructResult {
   /// the samples' number of vertices (remesh::simplify), unless that folded it through itself.
   std::optional<remesh::SimplifyStats> simplify_stats;
   /// The method whose result `mesh` is: options.method, or PowerCrust when the fallback's run
-  /// was kept (then `envelope` and `sheet_stats` describe the envelope run it replaced).
+  /// was kept (then `envelope` and `sheet_stats` describe the envelope run it replaced) or
+  /// the Power Crust first (then no envelope run was made: `envelope` is empty).
   Method method = Method::Envelope;
   /// The topology of `mesh` when the retry check computed it (and no remeshing changed the
   /// mesh since): analysis::analyze_mesh takes it instead of computing it again.
@@ -233,7 +260,9 @@ struct ReconstructResult {
 };
 
 /// Reconstruct M from its samples (points with normal lines and boundary curves): with
-/// options.use_local_rho_first a local-rho run kept when its sheet is clean; otherwise one run,
+/// options.use_power_crust_first, for an input without boundary curves the direct Power Crust
+/// kept when it has no defect; with options.use_local_rho_first a local-rho run kept when its
+/// sheet is clean; otherwise one run,
 /// a second with adaptive rho if the first fails the check of options.use_adaptive_retry,
 /// the direct Power Crust if the input has no boundary curves and the kept run still fails
 /// (options.use_power_crust_fallback), then the samples' mesh (options.mesh_samples) or the

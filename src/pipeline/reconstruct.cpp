@@ -8,6 +8,9 @@
 #include "envcrust/topology.h"
 #include "envcrust/union_find.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 #include <numbers>
@@ -146,6 +149,7 @@ ReconstructOptions options_for_input(const InputKind& input, ReconstructOptions 
   options.use_power_crust_fallback = options.use_adaptive_retry;
   // A built-in surface's rho is the experiments' subject; a file's is chosen for it.
   options.use_local_rho_first = options.use_adaptive_retry && !input.is_builtin;
+  options.use_power_crust_first = options.use_local_rho_first;
   options.are_curves_detected = input.is_boundary_detected;
   options.max_genus = input.genus;
   return options;
@@ -381,24 +385,42 @@ double gap_size(const envelope::EnvelopeSamples& envelope) {
   return rk[at];
 }
 
-// The direct Power Crust of the samples, in place of a failed envelope run when it has fewer
-// defects (ReconstructOptions::use_power_crust_fallback).
-void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_defects,
-                          const envelope::SurfaceSamples& samples, const ReconstructOptions& options,
-                          SampleGroups& groups, const Progress& progress) {
+// The direct Power Crust of the samples; `failure` says why it gave nothing, if it threw.
+ReconstructResult direct_power_crust(const envelope::SurfaceSamples& samples, const ReconstructOptions& options,
+                                     std::string& failure, const Progress& progress) {
   ReconstructOptions direct = options;
   direct.method = Method::PowerCrust;
   direct.remesh.reset();
+  try {
+    return reconstruct_once(samples, direct, progress);
+  } catch (const DegenerateInput& e) {  // coplanar samples: no solid to bound
+    failure = e.what();
+  } catch (const NumericalFailure& e) {
+    failure = e.what();
+  }
+  return {};
+}
+
+// A direct Power Crust already run (the Power Crust first, not kept), reused by the fallback.
+struct DirectCrust {
+  ReconstructResult run;
+  std::string failure;
+};
+
+// The direct Power Crust of the samples, in place of a failed envelope run when it has fewer
+// defects (ReconstructOptions::use_power_crust_fallback). `earlier`: its run, if made before.
+void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_defects,
+                          const envelope::SurfaceSamples& samples, const ReconstructOptions& options,
+                          SampleGroups& groups, std::optional<DirectCrust> earlier, const Progress& progress) {
   PowerCrustFallback fallback;
   fallback.input_curves = samples.boundary.size();
   fallback.envelope = envelope_defects;
   ReconstructResult crust;
-  try {
-    crust = reconstruct_once(samples, direct, progress);
-  } catch (const DegenerateInput& e) {  // coplanar samples: no solid to bound
-    fallback.power_crust_failure = e.what();
-  } catch (const NumericalFailure& e) {
-    fallback.power_crust_failure = e.what();
+  if (earlier) {
+    crust = std::move(earlier->run);
+    fallback.power_crust_failure = std::move(earlier->failure);
+  } else {
+    crust = direct_power_crust(samples, options, fallback.power_crust_failure, progress);
   }
   fallback.power_crust = defects_of(crust, samples, out.envelope, groups);
   fallback.power_crust.uncovered_patches = uncovered_patches(crust.mesh, samples.points, out.envelope.rho);
@@ -416,8 +438,65 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
     out.method = Method::PowerCrust;
     out.warnings = std::move(crust.warnings);  // the envelope run's no longer describe the result
   }
-  out.seconds.power_crust += crust.seconds.power_crust;
+  // A crust run first was counted there.
+  if (!earlier) out.seconds.power_crust += crust.seconds.power_crust;
   out.power_crust_fallback = fallback;
+}
+
+// The envelope's sheets bridge gaps up to this many rho (as in envelope::sample_envelope).
+constexpr double kGapsPerRho = 2.5;
+
+// The gap size of the samples themselves, before any envelope run: the largest distance of
+// 99% of them to their 8th nearest (gap_size of an envelope run).
+double sample_gap_size(const std::vector<Point3>& points) {
+  if (points.size() < 2) return 0;
+  const NearestIndex index(points);
+  const auto k = static_cast<unsigned>(std::min<std::size_t>(9, points.size()));
+  std::vector<double> rk(points.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      double farthest = 0;
+      for (const auto& [j, d] : index.nearest(points[i], k)) farthest = std::max(farthest, d);
+      rk[i] = farthest;
+    }
+  });
+  const auto at = std::min(rk.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(rk.size())));
+  std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
+  return rk[at];
+}
+
+// The Power Crust first (a closed input): its result when it has no defect at all, else
+// nothing, and the run in `tried` for the fallback to reuse; what it did goes in `report`.
+std::optional<ReconstructResult> power_crust_first(const envelope::SurfaceSamples& samples,
+                                                   const ReconstructOptions& once, PowerCrustFirst& report,
+                                                   std::optional<DirectCrust>& tried, const Progress& progress) {
+  Stopwatch clock;
+  DirectCrust crust;
+  crust.run = direct_power_crust(samples, once, crust.failure, progress);
+  report.failure = crust.failure;
+  // No envelope run yet: the checks read the rho that bridges the samples' gaps.
+  envelope::EnvelopeSamples bridging;
+  report.allowed_distance = sample_gap_size(samples.points);
+  bridging.rho = bridging.rho_min = report.allowed_distance / kGapsPerRho;
+  SampleGroups groups(samples, bridging.rho);
+  report.defects = defects_of(crust.run, samples, bridging, groups);
+  if (!report.defects.is_empty) {
+    report.defects.uncovered_patches = uncovered_patches(crust.run.mesh, samples.points, bridging.rho);
+    report.farthest_from_samples = farthest_from(crust.run.mesh, samples.points);
+  }
+  // As the envelope reads it: the rho that bridges the gaps beyond the cap on the reach (80
+  // points of an open cylinder give a closed tube without a defect).
+  report.is_input_too_sparse =
+      bridging.rho > once.envelope.max_reach_rel_diag * mesh::bbox_diagonal(samples.points);
+  report.is_kept = !report.defects.is_empty && report.defects.count(once.max_genus) == 0 &&
+                   report.farthest_from_samples <= report.allowed_distance && !report.is_input_too_sparse;
+  report.seconds = clock.lap();
+  if (report.is_kept) {
+    crust.run.method = Method::PowerCrust;
+    return std::move(crust.run);
+  }
+  tried = std::move(crust);
+  return std::nullopt;
 }
 
 // The local-rho first run (ReconstructOptions::use_local_rho_first): its result, or nothing
@@ -459,12 +538,18 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   once.remesh.reset();
   const bool is_sheet_run = options.method == Method::Envelope && options.extraction == Extraction::Sheet;
   const bool is_rho_automatic = !options.envelope.rho && options.envelope.rho_mode == envelope::RhoMode::Uniform;
+  std::optional<PowerCrustFirst> crust_report;
+  std::optional<DirectCrust> crust_tried;
+  std::optional<ReconstructResult> first;  // the Power Crust first's or the local run's, kept
+  if (options.use_power_crust_first && is_sheet_run && is_rho_automatic && samples.boundary.empty() &&
+      samples.points.size() >= 4)
+    first = power_crust_first(samples, once, crust_report.emplace(), crust_tried, progress);
   std::optional<LocalRhoFirst> local_report;
-  std::optional<ReconstructResult> local;
-  if (options.use_local_rho_first && is_sheet_run && is_rho_automatic && samples.points.size() >= 2)
-    local = local_rho_run(samples, once, local_report.emplace(), progress);
-  ReconstructResult out = local ? std::move(*local) : reconstruct_once(samples, once, progress);
-  out.method = options.method;
+  if (!first && options.use_local_rho_first && is_sheet_run && is_rho_automatic && samples.points.size() >= 2)
+    first = local_rho_run(samples, once, local_report.emplace(), progress);
+  const bool local = first.has_value();
+  ReconstructResult out = first ? std::move(*first) : reconstruct_once(samples, once, progress);
+  if (!crust_report || !crust_report->is_kept) out.method = options.method;
   SampleGroups groups(samples, out.envelope.rho);
   std::optional<RunDefects> kept;  // the checks of the kept envelope run, when made
   if (!local && options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
@@ -498,11 +583,15 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
     if ((fails(*kept, out.envelope, options.max_genus) || kept->uncovered_patches > 0) &&
         !out.envelope.is_input_too_sparse &&
         samples.boundary.size() < kept->count(options.max_genus))
-      power_crust_fallback(out, *kept, samples, options, groups, progress);
+      power_crust_fallback(out, *kept, samples, options, groups, std::move(crust_tried), progress);
   }
   // Set after the retries, which may replace `out` with their own run.
   if (local_report && !local_report->is_kept) out.seconds.envelope += local_report->seconds;
   out.local_rho_first = local_report;
+  // The Power Crust first's time, with its checks: the result's own when kept, else added.
+  if (crust_report && crust_report->is_kept) out.seconds.power_crust = crust_report->seconds;
+  else if (crust_report) out.seconds.power_crust += crust_report->seconds;
+  out.power_crust_first = crust_report;
   // The Power Crust's surface, where it replaced the sheet, guides the samples' mesh as well:
   // it too lies on the samples, ten times as finely.
   if (options.mesh_samples && !options.remesh && is_sheet_run) {

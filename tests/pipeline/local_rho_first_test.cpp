@@ -22,10 +22,67 @@ pipeline::InputKind point_file() {
 
 TEST(LocalRhoFirst, IsOnForFilesWithAutomaticRhoOnly) {
   EXPECT_TRUE(pipeline::options_for_input(point_file()).use_local_rho_first);
+  EXPECT_TRUE(pipeline::options_for_input(point_file()).use_power_crust_first);
   EXPECT_FALSE(pipeline::options_for_input({}).use_local_rho_first);  // a built-in surface
+  EXPECT_FALSE(pipeline::options_for_input({}).use_power_crust_first);
   pipeline::ReconstructOptions given;
   given.envelope.rho = 0.1;
   EXPECT_FALSE(pipeline::options_for_input(point_file(), given).use_local_rho_first);
+  EXPECT_FALSE(pipeline::options_for_input(point_file(), given).use_power_crust_first);
+}
+
+// A closed file: the direct Power Crust runs before any envelope run and, with no defect, is
+// the result (a sphere: one closed piece of genus 0, every sample on it).
+TEST(PowerCrustFirst, IsKeptOnAClosedInputWithoutDefectAndNoEnvelopeRuns) {
+  const auto samples = fixtures::builtin_samples("sphere", 3000);
+  ASSERT_TRUE(samples.boundary.empty());
+  auto options = pipeline::options_for_input(point_file());
+  options.mesh_samples.reset();
+  const auto result = pipeline::reconstruct(samples, options);
+  ASSERT_TRUE(result.power_crust_first.has_value());
+  const auto& first = *result.power_crust_first;
+  EXPECT_TRUE(first.is_kept);
+  EXPECT_TRUE(first.failure.empty());
+  ASSERT_TRUE(first.defects.genus.has_value());
+  EXPECT_EQ(*first.defects.genus, 0);
+  EXPECT_EQ(first.defects.count(std::nullopt), 0u);
+  EXPECT_GT(first.allowed_distance, 0.0);
+  EXPECT_LE(first.farthest_from_samples, first.allowed_distance);
+  EXPECT_EQ(result.method, pipeline::Method::PowerCrust);
+  EXPECT_FALSE(result.local_rho_first.has_value());
+  EXPECT_FALSE(result.adaptive_retry.has_value());
+  EXPECT_FALSE(result.power_crust_fallback.has_value());
+  EXPECT_TRUE(result.envelope.samples.empty());
+  EXPECT_DOUBLE_EQ(result.seconds.power_crust, first.seconds);
+  const auto t = topology::analyze_topology(result.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_EQ(t.components.size(), 1u);
+  const double diagonal = mesh::bbox_diagonal(samples.points);
+  const auto d = distance::distances_to_mesh(samples.points, result.mesh);
+  EXPECT_LT(*std::max_element(d.begin(), d.end()), 0.01 * diagonal);
+}
+
+// A handle is a defect while the genus is unknown: a torus's Power Crust is not kept and the
+// local run follows; without the fallback the Power Crust is not tried first either.
+TEST(PowerCrustFirst, GivesWayToTheLocalRunOnAHandleAndIsOffWithoutTheFallback) {
+  const auto samples = fixtures::builtin_samples("torus", 3000);
+  auto options = pipeline::options_for_input(point_file());
+  options.mesh_samples.reset();
+  const auto result = pipeline::reconstruct(samples, options);
+  ASSERT_TRUE(result.power_crust_first.has_value());
+  EXPECT_FALSE(result.power_crust_first->is_kept);
+  ASSERT_TRUE(result.power_crust_first->defects.genus.has_value());
+  EXPECT_EQ(*result.power_crust_first->defects.genus, 1);
+  ASSERT_TRUE(result.local_rho_first.has_value());
+  EXPECT_EQ(result.method, pipeline::Method::Envelope);
+  EXPECT_GE(result.seconds.power_crust, result.power_crust_first->seconds);
+  EXPECT_EQ(topology::total_genus(topology::analyze_topology(result.mesh)).value_or(-1), 1);
+
+  options.use_power_crust_fallback = false;
+  options.use_power_crust_first = false;
+  EXPECT_FALSE(pipeline::reconstruct(samples, options).power_crust_first.has_value());
 }
 
 // The horn narrows to a tip: one rho must fit the tip, a local one grows along the wide end.
@@ -73,7 +130,7 @@ TEST(LocalRhoFirst, GivesWayToTheUniformRunWhenItsResultFailsTheCheck) {
   kind.genus = 0;  // wrong on purpose: every torus then fails
   auto options = pipeline::options_for_input(kind);
   options.mesh_samples.reset();
-  options.use_power_crust_fallback = false;
+  options.use_power_crust_fallback = options.use_power_crust_first = false;
   const auto result = pipeline::reconstruct(samples, options);
   ASSERT_TRUE(result.local_rho_first.has_value());
   EXPECT_FALSE(result.local_rho_first->is_kept);
