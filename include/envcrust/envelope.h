@@ -121,7 +121,8 @@ struct LocalReachOptions {
 
 /// Per-sample local reach (feature size): Federer's value |q - p|^2 / (2 |(q - p) . n_p|)
 /// minimised over the samples q within the search radius (docs/method.md §4.4), median-smoothed over
-/// neighbours; infinite where no pair constrains it (a flat piece). One value per point.
+/// neighbours; infinite where no pair reads below half the search radius (a flat piece, or a
+/// reach beyond what was asked for). One value per point.
 /// @throws InvalidInput on mismatched sizes; InvalidOptions on an option out of range.
 std::vector<double> estimate_local_reach(const SurfaceSamples& samples, const LocalReachOptions& options = {});
 

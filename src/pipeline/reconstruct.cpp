@@ -375,10 +375,9 @@ double farthest_from(const TriangleMesh& mesh, const std::vector<Point3>& points
   return farthest;
 }
 
-// The samples' gap size: the distance from 99% of them to their 8th nearest is at most this
-// (the quantile the automatic rho bridges, EnvelopeOptions::gap_quantile).
-double gap_size(const envelope::EnvelopeSamples& envelope) {
-  std::vector<double> rk = envelope.input_neighbour_distance;
+// The samples' gap size from each one's distance to its 8th nearest (`rk`): 99% of them are
+// at most this far (the quantile the automatic rho bridges, EnvelopeOptions::gap_quantile).
+double gap_size(std::vector<double> rk) {
   if (rk.empty()) return 0;
   const auto at = std::min(rk.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(rk.size())));
   std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
@@ -428,7 +427,7 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
   fallback.kept_power_crust = fallback.power_crust.is_better_than(fallback.envelope, options.max_genus);
   if (fallback.kept_power_crust) {
     fallback.crust_farthest_from_samples = farthest_from(crust.mesh, samples.points);
-    fallback.crust_allowed_distance = gap_size(out.envelope);
+    fallback.crust_allowed_distance = gap_size(out.envelope.input_neighbour_distance);
     fallback.kept_power_crust = fallback.crust_farthest_from_samples <= fallback.crust_allowed_distance;
   }
   if (fallback.kept_power_crust) {
@@ -447,7 +446,7 @@ void power_crust_fallback(ReconstructResult& out, const RunDefects& envelope_def
 constexpr double kGapsPerRho = 2.5;
 
 // The gap size of the samples themselves, before any envelope run: the largest distance of
-// 99% of them to their 8th nearest (gap_size of an envelope run).
+// 99% of them to their 8th nearest (what an envelope run reads from its own distances).
 double sample_gap_size(const std::vector<Point3>& points) {
   if (points.size() < 2) return 0;
   const NearestIndex index(points);
@@ -460,9 +459,7 @@ double sample_gap_size(const std::vector<Point3>& points) {
       rk[i] = farthest;
     }
   });
-  const auto at = std::min(rk.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(rk.size())));
-  std::nth_element(rk.begin(), rk.begin() + static_cast<std::ptrdiff_t>(at), rk.end());
-  return rk[at];
+  return gap_size(std::move(rk));
 }
 
 // The Power Crust first (a closed input): its result when it has no defect at all, else
