@@ -544,12 +544,12 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
   std::optional<LocalRhoFirst> local_report;
   if (!first && options.use_local_rho_first && is_sheet_run && is_rho_automatic && samples.points.size() >= 2)
     first = local_rho_run(samples, once, local_report.emplace(), progress);
-  const bool local = first.has_value();
+  const bool is_first_kept = first.has_value();  // then no uniform run, retry or fallback
   ReconstructResult out = first ? std::move(*first) : reconstruct_once(samples, once, progress);
   if (!crust_report || !crust_report->is_kept) out.method = options.method;
   SampleGroups groups(samples, out.envelope.rho);
   std::optional<RunDefects> kept;  // the checks of the kept envelope run, when made
-  if (!local && options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
+  if (!is_first_kept && options.use_adaptive_retry && is_sheet_run && options.envelope.rho_mode == envelope::RhoMode::Uniform) {
     AdaptiveRetry retry;
     retry.max_genus = options.max_genus;
     retry.uniform = defects_of(out, samples, out.envelope, groups);
@@ -569,7 +569,7 @@ ReconstructResult reconstruct(const envelope::SurfaceSamples& samples,
       out.adaptive_retry = retry;
     }
   }
-  if (!local && options.use_power_crust_fallback && is_sheet_run &&
+  if (!is_first_kept && options.use_power_crust_fallback && is_sheet_run &&
       (samples.boundary.empty() || options.are_curves_detected)) {
     if (!kept) kept = defects_of(out, samples, out.envelope, groups);
     kept->uncovered_patches = uncovered_patches(out.mesh, samples.points, out.envelope.rho);
