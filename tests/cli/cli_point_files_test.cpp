@@ -55,6 +55,34 @@ TEST_F(CliTest, reconstruct_an_unoriented_point_cloud_of_the_open_cylinder) {
   EXPECT_FALSE(j.contains("adaptive_retry"));
 }
 
+// A closed point file: the plain Power Crust runs first and, with no defect, is the result; no
+// envelope is made (the report's envelope is null). Asking for the envelope file makes one.
+TEST_F(CliTest, reconstruct_of_a_closed_point_file_keeps_a_clean_power_crust_first) {
+  ASSERT_EQ(run_envcrust("sample sphere -n 4000 --seed 5 -q -o " + path("s.xyz")).exit_code, 0);
+  const auto r = run_envcrust("reconstruct " + path("s.xyz") + " -r builtin:sphere -o " + path("s.ply"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("  the input has no boundary curve: the direct Power Crust first ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" s) has genus 0 (0 defects), kept (no envelope run)\n"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("  envelope: rho"), std::string::npos) << r.out;
+  const auto j = run_envcrust_json("reconstruct " + path("s.xyz") + " -r builtin:sphere -o " + path("s.ply") +
+                                   " --json");
+  EXPECT_EQ(j["power_crust_first"]["kept"], true);
+  EXPECT_EQ(j["power_crust_first"]["result"]["defects"], 0);
+  EXPECT_TRUE(j["envelope"].is_null());
+  EXPECT_FALSE(j.contains("local_rho_first"));
+  const auto& a = j["analysis"];
+  EXPECT_EQ(a["euler_characteristic"], 2);
+  EXPECT_EQ(a["boundary_loops"], 0);
+  EXPECT_EQ(a["is_manifold"], true);
+  EXPECT_LT(a["distance"]["mesh_to_reference"]["max_rel_diag"].get<double>(), 0.01);
+  EXPECT_LT(a["distance"]["reference_to_mesh"]["max_rel_diag"].get<double>(), 0.01);
+  const auto e = run_envcrust_json("reconstruct " + path("s.xyz") + " -o " + path("e.ply") + " --envelope-out " +
+                                   path("env.xyz") + " --json");
+  EXPECT_FALSE(e.contains("power_crust_first"));
+  EXPECT_GT(e["envelope"]["samples"].get<long>(), 0);
+  EXPECT_TRUE(fs::exists(path("env.xyz")));
+}
+
 // Normals in a point file say nothing about the rim: the reach of its surface is read the same
 // with them as without. The hemisphere (reach 1) with its exact normals in the file read a reach
 // of 0.10 from a rim vertex whose fitted curve tilts its conormal, and ran with a tenth of the
