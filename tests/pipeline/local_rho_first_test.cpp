@@ -20,6 +20,13 @@ pipeline::InputKind point_file() {
   return kind;
 }
 
+// A point file's options, its result kept as the sheet (or crust) itself.
+pipeline::ReconstructOptions file_options() {
+  auto options = pipeline::options_for_input(point_file());
+  options.mesh_samples.reset();
+  return options;
+}
+
 TEST(LocalRhoFirst, IsOnForFilesWithAutomaticRhoOnly) {
   EXPECT_TRUE(pipeline::options_for_input(point_file()).use_local_rho_first);
   EXPECT_TRUE(pipeline::options_for_input(point_file()).use_power_crust_first);
@@ -36,9 +43,7 @@ TEST(LocalRhoFirst, IsOnForFilesWithAutomaticRhoOnly) {
 TEST(PowerCrustFirst, IsKeptOnAClosedInputWithoutDefectAndNoEnvelopeRuns) {
   const auto samples = fixtures::builtin_samples("sphere", 3000);
   ASSERT_TRUE(samples.boundary.empty());
-  auto options = pipeline::options_for_input(point_file());
-  options.mesh_samples.reset();
-  const auto result = pipeline::reconstruct(samples, options);
+  const auto result = pipeline::reconstruct(samples, file_options());
   ASSERT_TRUE(result.power_crust_first.has_value());
   const auto& first = *result.power_crust_first;
   EXPECT_TRUE(first.is_kept);
@@ -65,11 +70,10 @@ TEST(PowerCrustFirst, IsKeptOnAClosedInputWithoutDefectAndNoEnvelopeRuns) {
 }
 
 // A handle is a defect while the genus is unknown: a torus's Power Crust is not kept and the
-// local run follows; without the fallback the Power Crust is not tried first either.
-TEST(PowerCrustFirst, GivesWayToTheLocalRunOnAHandleAndIsOffWithoutTheFallback) {
+// local run follows. With its option off it is not tried.
+TEST(PowerCrustFirst, GivesWayToTheLocalRunOnAHandleAndIsNotTriedWhenOff) {
   const auto samples = fixtures::builtin_samples("torus", 3000);
-  auto options = pipeline::options_for_input(point_file());
-  options.mesh_samples.reset();
+  auto options = file_options();
   const auto result = pipeline::reconstruct(samples, options);
   ASSERT_TRUE(result.power_crust_first.has_value());
   EXPECT_FALSE(result.power_crust_first->is_kept);
@@ -80,7 +84,6 @@ TEST(PowerCrustFirst, GivesWayToTheLocalRunOnAHandleAndIsOffWithoutTheFallback) 
   EXPECT_GE(result.seconds.power_crust, result.power_crust_first->seconds);
   EXPECT_EQ(topology::total_genus(topology::analyze_topology(result.mesh)).value_or(-1), 1);
 
-  options.use_power_crust_fallback = false;
   options.use_power_crust_first = false;
   EXPECT_FALSE(pipeline::reconstruct(samples, options).power_crust_first.has_value());
 }
@@ -90,8 +93,7 @@ TEST(PowerCrustFirst, GivesWayToTheLocalRunOnAHandleAndIsOffWithoutTheFallback) 
 // uniform run, with the same topology.
 TEST(LocalRhoFirst, IsKeptWhereTheSheetIsCleanAndUsesFewerEnvelopeSamples) {
   const auto samples = fixtures::builtin_samples("horn", 4000);
-  auto options = pipeline::options_for_input(point_file());
-  options.mesh_samples.reset();
+  auto options = file_options();
   const auto local = pipeline::reconstruct(samples, options);
   ASSERT_TRUE(local.local_rho_first.has_value());
   const auto& report = *local.local_rho_first;
